@@ -1,0 +1,257 @@
+"""Convex shapes: validated once in Python, then stored as plain arrays.
+
+A shape knows its geometry in body coordinates and its mass properties per
+unit density.  Vertices are normalised to counter-clockwise order, which the
+narrow phase relies on (outward normals are the edge direction rotated by -90
+degrees).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+MAX_POLYGON_VERTICES = 64
+# a vertex turn smaller than this (sine of the angle) counts as collinear
+_COLLINEAR_SINE = 1e-9
+
+
+class Shape:
+    """Base of all shapes: geometry in body coordinates plus mass properties."""
+
+    kind: str = ""
+
+    def mass_properties(self, density: float):
+        """(mass, centroid (2,), inertia about the centroid) for a density."""
+        raise NotImplementedError
+
+    @property
+    def bounding_radius(self) -> float:
+        raise NotImplementedError
+
+
+def _as_points(vertices, what="vertices") -> np.ndarray:
+    try:
+        pts = np.array(vertices, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"{what}: expected a list of (x, y) pairs ({exc})") from None
+    if pts.ndim != 2 or pts.shape[1] != 2:
+        raise ValueError(f"{what}: expected a list of (x, y) pairs, got shape {pts.shape}")
+    if not np.all(np.isfinite(pts)):
+        raise ValueError(f"{what}: coordinates must be finite (found NaN or inf)")
+    return pts
+
+
+def _signed_area(p: np.ndarray) -> float:
+    q = np.roll(p, -1, axis=0)
+    return 0.5 * float(np.sum(p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]))
+
+
+class Polygon(Shape):
+    """A convex polygon.  ``Polygon(vertices)`` accepts either winding.
+
+    Raises ``ValueError`` naming the problem for fewer than 3 or more than
+    ``MAX_POLYGON_VERTICES`` vertices, non-finite coordinates, repeated
+    vertices, zero area, collinear vertices, and non-convex or
+    self-intersecting outlines.  ``Polygon.hull(points)`` builds the convex
+    hull for callers who want one from arbitrary points.
+    """
+
+    kind = "polygon"
+
+    def __init__(self, vertices, *, _spec=None):
+        pts = _as_points(vertices)
+        n = len(pts)
+        if n < 3:
+            raise ValueError(f"polygon needs at least 3 vertices, got {n}")
+        if n > MAX_POLYGON_VERTICES:
+            raise ValueError(f"polygon has {n} vertices; at most {MAX_POLYGON_VERTICES} are supported")
+        scale = float(np.max(np.abs(pts - pts.mean(axis=0)))) or 0.0
+        area = _signed_area(pts)
+        if scale == 0.0 or abs(area) <= 1e-12 * scale * scale:
+            raise ValueError("polygon has zero area (all vertices coincide or lie on one line)")
+        if area < 0:
+            pts = pts[::-1].copy()
+            area = -area
+        _check_convex(pts, scale)
+        self.vertices = pts
+        self.vertices.setflags(write=False)
+        self._spec = _spec if _spec is not None else {"polygon": pts.tolist()}
+
+    # -- constructors -------------------------------------------------
+    @classmethod
+    def box(cls, width: float, height: float) -> "Polygon":
+        """An axis-aligned box centred on the body origin."""
+        w, h = float(width), float(height)
+        if not (math.isfinite(w) and math.isfinite(h)) or w <= 0 or h <= 0:
+            raise ValueError(f"box size must be positive and finite, got ({width}, {height})")
+        hw, hh = 0.5 * w, 0.5 * h
+        return cls([(-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh)], _spec={"box": [w, h]})
+
+    @classmethod
+    def regular(cls, sides: int, radius: float) -> "Polygon":
+        """A regular polygon with circumradius ``radius`` and a flat bottom edge."""
+        if int(sides) != sides or not 3 <= sides <= MAX_POLYGON_VERTICES:
+            raise ValueError(f"regular polygon needs 3..{MAX_POLYGON_VERTICES} sides, got {sides}")
+        r = float(radius)
+        if not math.isfinite(r) or r <= 0:
+            raise ValueError(f"regular polygon radius must be positive and finite, got {radius}")
+        sides = int(sides)
+        a0 = -0.5 * math.pi + math.pi / sides
+        pts = [(r * math.cos(a0 + 2 * math.pi * k / sides), r * math.sin(a0 + 2 * math.pi * k / sides))
+               for k in range(sides)]
+        return cls(pts, _spec={"regular": {"sides": sides, "radius": r}})
+
+    @classmethod
+    def hull(cls, points) -> "Polygon":
+        """The convex hull of arbitrary points (Andrew's monotone chain).
+
+        Collinear and repeated points are dropped.
+        """
+        pts = _as_points(points, "points")
+        h = convex_hull(pts)
+        if len(h) < 3:
+            raise ValueError("points have no area: their convex hull is a point or a segment")
+        if len(h) > MAX_POLYGON_VERTICES:
+            raise ValueError(f"hull has {len(h)} vertices; at most {MAX_POLYGON_VERTICES} are supported")
+        return cls(h)
+
+    # -- properties ---------------------------------------------------
+    @property
+    def spec(self) -> dict:
+        """The scene-file form of this shape (``{"box": ...}`` etc.)."""
+        return self._spec
+
+    @property
+    def bounding_radius(self) -> float:
+        c = self.centroid
+        return float(np.max(np.hypot(*(self.vertices - c).T)))
+
+    @property
+    def area(self) -> float:
+        return _signed_area(self.vertices)
+
+    @property
+    def centroid(self) -> np.ndarray:
+        p = self.vertices
+        q = np.roll(p, -1, axis=0)
+        cr = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
+        a = 0.5 * cr.sum()
+        return ((p + q) * cr[:, None]).sum(axis=0) / (6.0 * a)
+
+    def mass_properties(self, density: float):
+        """Mass, centroid and inertia about the centroid.
+
+        Second moment of a polygon about the origin (sum over edge triangles):
+        J_o = rho/12 * sum cross(p_i, p_i+1) (p_i.p_i + p_i.p_i+1 + p_i+1.p_i+1);
+        the parallel-axis theorem moves it to the centroid.  Vertices are
+        shifted to the centroid first to avoid cancellation far from the origin.
+        """
+        c = self.centroid
+        p = self.vertices - c
+        q = np.roll(p, -1, axis=0)
+        cr = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
+        area = 0.5 * cr.sum()
+        dots = (p * p).sum(1) + (p * q).sum(1) + (q * q).sum(1)
+        inertia = density * float((cr * dots).sum()) / 12.0
+        return density * area, c.copy(), inertia
+
+    def __repr__(self):
+        return f"Polygon({self.vertices.tolist()})"
+
+    def __eq__(self, other):
+        return isinstance(other, Polygon) and np.array_equal(self.vertices, other.vertices)
+
+    __hash__ = None
+
+
+class Circle(Shape):
+    """A disc of ``radius`` centred at ``offset`` in body coordinates."""
+
+    kind = "circle"
+
+    def __init__(self, radius: float, offset=(0.0, 0.0)):
+        r = float(radius)
+        if not math.isfinite(r) or r <= 0:
+            raise ValueError(f"circle radius must be positive and finite, got {radius}")
+        off = _as_points([offset], "offset")[0]
+        self.radius = r
+        self.offset = off
+        self.offset.setflags(write=False)
+
+    @property
+    def spec(self) -> dict:
+        if np.any(self.offset):
+            return {"circle": {"radius": self.radius, "offset": self.offset.tolist()}}
+        return {"circle": self.radius}
+
+    @property
+    def bounding_radius(self) -> float:
+        return self.radius
+
+    @property
+    def area(self) -> float:
+        return math.pi * self.radius ** 2
+
+    @property
+    def centroid(self) -> np.ndarray:
+        return self.offset.copy()
+
+    def mass_properties(self, density: float):
+        m = density * self.area
+        return m, self.offset.copy(), 0.5 * m * self.radius ** 2
+
+    def __repr__(self):
+        return f"Circle({self.radius}, offset={self.offset.tolist()})"
+
+    def __eq__(self, other):
+        return (isinstance(other, Circle) and self.radius == other.radius
+                and np.array_equal(self.offset, other.offset))
+
+    __hash__ = None
+
+
+def _check_convex(pts: np.ndarray, scale: float) -> None:
+    """Raise ValueError unless ``pts`` (CCW) is a strictly convex simple polygon."""
+    n = len(pts)
+    edges = np.roll(pts, -1, axis=0) - pts
+    lengths = np.hypot(edges[:, 0], edges[:, 1])
+    for i in range(n):
+        if lengths[i] <= 1e-12 * scale:
+            raise ValueError(f"polygon has repeated vertices at index {i} and {(i + 1) % n}")
+    turning = 0.0
+    for i in range(n):
+        e0, e1 = edges[i - 1], edges[i]
+        s = (e0[0] * e1[1] - e0[1] * e1[0]) / (lengths[i - 1] * lengths[i])
+        if s < -_COLLINEAR_SINE:
+            raise ValueError(f"polygon is not convex (reflex vertex at index {i}); "
+                             "use Polygon.hull(points) for the convex hull")
+        if s <= _COLLINEAR_SINE:
+            raise ValueError(f"polygon has collinear vertices (vertex {i} lies on the line of its neighbours)")
+        turning += math.atan2(e0[0] * e1[1] - e0[1] * e1[0], e0[0] * e1[0] + e0[1] * e1[1])
+    # a convex simple polygon turns exactly once; a star (pentagram) turns twice
+    if abs(turning - 2 * math.pi) > 1e-6:
+        raise ValueError("polygon is self-intersecting (its outline winds more than once)")
+
+
+def convex_hull(pts: np.ndarray) -> np.ndarray:
+    """Counter-clockwise convex hull without collinear points (monotone chain)."""
+    uniq = np.unique(pts, axis=0)
+    order = np.lexsort((uniq[:, 1], uniq[:, 0]))
+    p = uniq[order]
+    if len(p) < 3:
+        return p
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower, upper = [], []
+    for pt in p:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], pt) <= 0:
+            lower.pop()
+        lower.append(pt)
+    for pt in p[::-1]:
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], pt) <= 0:
+            upper.pop()
+        upper.append(pt)
+    return np.array(lower[:-1] + upper[:-1])
