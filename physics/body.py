@@ -1,0 +1,281 @@
+"""Body handles: small Python objects that read and write the world's arrays.
+
+A handle stores only the world and a stable id; every property goes through
+the id -> slot map, so handles stay valid while other bodies are added and
+removed.  Setters validate (finite, non-negative where physical) and wake
+the body so edits in a running sandbox take effect at once.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .store import DYNAMIC, KIND_NAMES, KINDS
+
+
+def finite_vec(value, field: str) -> np.ndarray:
+    try:
+        v = np.array(value, dtype=np.float64).reshape(2)
+    except (TypeError, ValueError):
+        raise ValueError(f"{field}: expected a pair of numbers, got {value!r}") from None
+    if not np.all(np.isfinite(v)):
+        raise ValueError(f"{field}: must be finite, got {value!r}")
+    return v
+
+
+def finite_num(value, field: str, lo=None, hi=None, lo_open=False) -> float:
+    if isinstance(value, bool):
+        raise ValueError(f"{field}: expected a number, got {value!r}")
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{field}: expected a number, got {value!r}") from None
+    if not math.isfinite(x):
+        raise ValueError(f"{field}: must be finite, got {value!r}")
+    if lo is not None and (x < lo or (lo_open and x == lo)):
+        raise ValueError(f"{field}: must be {'>' if lo_open else '>='} {lo}, got {value!r}")
+    if hi is not None and x > hi:
+        raise ValueError(f"{field}: must be <= {hi}, got {value!r}")
+    return x
+
+
+def friction_pair(value, field: str = "friction") -> tuple[float, float]:
+    """``0.6`` -> (0.6, 0.6); ``(static, dynamic)`` or ``{"static", "dynamic"}`` as given."""
+    if isinstance(value, dict):
+        s, d = value.get("static"), value.get("dynamic")
+    elif isinstance(value, (tuple, list, np.ndarray)):
+        if len(value) != 2:
+            raise ValueError(f"{field}: expected one number or a (static, dynamic) pair, got {value!r}")
+        s, d = value
+    else:
+        s = d = value
+    return finite_num(s, f"{field}.static", lo=0.0), finite_num(d, f"{field}.dynamic", lo=0.0)
+
+
+class Body:
+    """Handle of one rigid body in a :class:`~physics.World`."""
+
+    __slots__ = ("_world", "_id", "shape")
+
+    def __init__(self, world, oid: int, shape):
+        self._world = world
+        self._id = oid
+        self.shape = shape
+
+    # -- plumbing ------------------------------------------------------
+    @property
+    def _s(self) -> int:
+        try:
+            return self._world._bodies.slot_of[self._id]
+        except KeyError:
+            raise ValueError(f"body {self._id} was removed from its world") from None
+
+    @property
+    def _B(self):
+        return self._world._bodies.view
+
+    def _rot(self):
+        q = self._B.q[self._s]
+        c, s = math.cos(q), math.sin(q)
+        return np.array([[c, -s], [s, c]])
+
+    @property
+    def id(self) -> int:
+        return self._id
+
+    @property
+    def alive(self) -> bool:
+        return self._id in self._world._bodies.slot_of
+
+    @property
+    def world(self):
+        return self._world
+
+    # -- state ---------------------------------------------------------
+    @property
+    def position(self) -> tuple[float, float]:
+        """Body origin in world coordinates (the frame the shape's vertices are given in)."""
+        s = self._s
+        p = self._B.x[s] - self._rot() @ self._B.com[s]
+        return (float(p[0]), float(p[1]))
+
+    @position.setter
+    def position(self, value):
+        p = finite_vec(value, "position")
+        s = self._s
+        self._B.x[s] = p + self._rot() @ self._B.com[s]
+        self._world._touched(s)
+
+    @property
+    def center_of_mass(self) -> tuple[float, float]:
+        s = self._s
+        return (float(self._B.x[s, 0]), float(self._B.x[s, 1]))
+
+    @property
+    def angle(self) -> float:
+        return float(self._B.q[self._s])
+
+    @angle.setter
+    def angle(self, value):
+        a = finite_num(value, "angle")
+        origin = np.array(self.position)
+        s = self._s
+        self._B.q[s] = a
+        self._B.x[s] = origin + self._rot() @ self._B.com[s]  # rotate about the origin
+        self._world._touched(s)
+
+    @property
+    def velocity(self) -> tuple[float, float]:
+        s = self._s
+        return (float(self._B.v[s, 0]), float(self._B.v[s, 1]))
+
+    @velocity.setter
+    def velocity(self, value):
+        self._B.v[self._s] = finite_vec(value, "velocity")
+        self._world._touched(self._s)
+
+    @property
+    def angular_velocity(self) -> float:
+        return float(self._B.w[self._s])
+
+    @angular_velocity.setter
+    def angular_velocity(self, value):
+        self._B.w[self._s] = finite_num(value, "angular_velocity")
+        self._world._touched(self._s)
+
+    # -- properties ----------------------------------------------------
+    @property
+    def mass(self) -> float:
+        return float(self._B.m[self._s])
+
+    @property
+    def inertia(self) -> float:
+        """Moment of inertia about the centre of mass (kg m^2)."""
+        return float(self._B.inertia[self._s])
+
+    @property
+    def density(self) -> float:
+        return float(self._B.density[self._s])
+
+    @density.setter
+    def density(self, value):
+        d = finite_num(value, "density", lo=0.0, lo_open=True)
+        self._world._set_mass(self._s, self.shape, d)
+        self._world._touched(self._s)
+
+    @property
+    def kind(self) -> str:
+        return KIND_NAMES[int(self._B.kind[self._s])]
+
+    @kind.setter
+    def kind(self, value):
+        if value not in KINDS:
+            raise ValueError(f"kind: must be one of {list(KINDS)}, got {value!r}")
+        s = self._s
+        self._B.kind[s] = KINDS[value]
+        self._world._set_mass(s, self.shape, float(self._B.density[s]))
+        if KINDS[value] != DYNAMIC and value == "static":
+            self._B.v[s] = 0.0
+            self._B.w[s] = 0.0
+        self._world._touched(s)
+
+    @property
+    def restitution(self) -> float:
+        return float(self._B.e[self._s])
+
+    @restitution.setter
+    def restitution(self, value):
+        self._B.e[self._s] = finite_num(value, "restitution", lo=0.0, hi=1.0)
+
+    @property
+    def friction(self) -> tuple[float, float]:
+        """(static, dynamic) Coulomb coefficients; assign one number or a pair."""
+        s = self._s
+        return (float(self._B.mu_s[s]), float(self._B.mu_d[s]))
+
+    @friction.setter
+    def friction(self, value):
+        s = self._s
+        self._B.mu_s[s], self._B.mu_d[s] = friction_pair(value)
+        self._world._touched(s)
+
+    @property
+    def static_friction(self) -> float:
+        return float(self._B.mu_s[self._s])
+
+    @static_friction.setter
+    def static_friction(self, value):
+        self._B.mu_s[self._s] = finite_num(value, "static_friction", lo=0.0)
+
+    @property
+    def dynamic_friction(self) -> float:
+        return float(self._B.mu_d[self._s])
+
+    @dynamic_friction.setter
+    def dynamic_friction(self, value):
+        self._B.mu_d[self._s] = finite_num(value, "dynamic_friction", lo=0.0)
+
+    @property
+    def name(self):
+        return self._world._name_of_body(self._id)
+
+    @name.setter
+    def name(self, value):
+        self._world._rename_body(self._id, value)
+
+    @property
+    def awake(self) -> bool:
+        return bool(self._B.awake[self._s])
+
+    def wake(self) -> None:
+        self._world._touched(self._s)
+
+    # -- geometry and forces -------------------------------------------
+    def local_to_world(self, point) -> tuple[float, float]:
+        p = np.array(self.position) + self._rot() @ finite_vec(point, "point")
+        return (float(p[0]), float(p[1]))
+
+    def world_to_local(self, point) -> tuple[float, float]:
+        p = self._rot().T @ (finite_vec(point, "point") - np.array(self.position))
+        return (float(p[0]), float(p[1]))
+
+    def velocity_at(self, point) -> tuple[float, float]:
+        s = self._s
+        r = finite_vec(point, "point") - self._B.x[s]
+        w = self._B.w[s]
+        return (float(self._B.v[s, 0] - w * r[1]), float(self._B.v[s, 1] + w * r[0]))
+
+    def apply_force(self, force, point=None) -> None:
+        """Add a force (N) for the next step, at a world point (default: centre of mass)."""
+        s = self._s
+        f = finite_vec(force, "force")
+        self._B.f[s] += f
+        if point is not None:
+            r = finite_vec(point, "point") - self._B.x[s]
+            self._B.tau[s] += r[0] * f[1] - r[1] * f[0]
+        self._world._touched(s)
+
+    def apply_impulse(self, impulse, point=None) -> None:
+        """Change momentum at once by ``impulse`` (N s) at a world point."""
+        s = self._s
+        j = finite_vec(impulse, "impulse")
+        B = self._B
+        B.v[s] += B.inv_m[s] * j
+        if point is not None:
+            r = finite_vec(point, "point") - B.x[s]
+            B.w[s] += B.inv_i[s] * (r[0] * j[1] - r[1] * j[0])
+        self._world._touched(s)
+
+    def world_vertices(self) -> np.ndarray:
+        """Polygon vertices in world coordinates (empty for circles)."""
+        verts = getattr(self.shape, "vertices", None)
+        if verts is None:
+            return np.zeros((0, 2))
+        return np.array(self.position) + verts @ self._rot().T
+
+    def __repr__(self):
+        if not self.alive:
+            return f"<Body {self._id} (removed)>"
+        nm = self.name
+        return f"<Body {nm or self._id} {self.kind} at ({self.position[0]:.3g}, {self.position[1]:.3g})>"
