@@ -40,6 +40,7 @@ CONTACT_FIELDS = {
     "mass_n": ((MAX_POINTS,), f8),  # effective mass along the normal
     "mass_t": ((MAX_POINTS,), f8),  # effective mass along the tangent
     "vn0": ((MAX_POINTS,), f8),    # relative normal velocity before solving (restitution)
+    "mu": ((MAX_POINTS,), f8),     # friction coefficient in force this step (static or dynamic)
     "bias": ((MAX_POINTS,), f8),   # per-point velocity bias / scratch
 }
 

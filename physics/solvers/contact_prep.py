@@ -1,0 +1,77 @@
+"""Per-step contact row setup shared by the iterative solvers.
+
+For every manifold point: anchors relative to each centre of mass (world
+frame), effective masses along the normal and the tangent
+(K = 1/m_a + 1/m_b + (r_a x n)^2/I_a + (r_b x n)^2/I_b, Catto 2005), the
+relative normal velocity before solving (the reference for restitution), and
+which Coulomb coefficient applies: static while the point sticks, dynamic
+once it slides (seed eq. 23).
+"""
+from __future__ import annotations
+
+import math
+
+from .._jit import kernel
+
+
+@kernel
+def cross(ax, ay, bx, by):
+    return ax * by - ay * bx
+
+
+@kernel
+def rel_velocity(B, a, b, rax, ray, rbx, rby):
+    """Velocity of b's material point minus a's at the anchors (v + w x r)."""
+    dvx = (B.v[b, 0] - B.w[b] * rby) - (B.v[a, 0] - B.w[a] * ray)
+    dvy = (B.v[b, 1] + B.w[b] * rbx) - (B.v[a, 1] + B.w[a] * rax)
+    return dvx, dvy
+
+
+@kernel
+def apply_impulse(B, a, b, rax, ray, rbx, rby, px, py):
+    """Impulse P acts on b, -P on a (normal points from a to b)."""
+    ima = B.inv_m[a]
+    imb = B.inv_m[b]
+    B.v[a, 0] -= ima * px
+    B.v[a, 1] -= ima * py
+    B.w[a] -= B.inv_i[a] * cross(rax, ray, px, py)
+    B.v[b, 0] += imb * px
+    B.v[b, 1] += imb * py
+    B.w[b] += B.inv_i[b] * cross(rbx, rby, px, py)
+
+
+@kernel
+def prepare_contacts(B, C, nc, stick_speed):
+    """Fill ra, rb, mass_n, mass_t, vn0 and mu (the friction coefficient in force)."""
+    for k in range(nc):
+        a = C.a[k]
+        b = C.b[k]
+        nx = C.normal[k, 0]
+        ny = C.normal[k, 1]
+        ima = B.inv_m[a]
+        imb = B.inv_m[b]
+        iia = B.inv_i[a]
+        iib = B.inv_i[b]
+        for p in range(C.count[k]):
+            rax = C.point[k, p, 0] - B.x[a, 0]
+            ray = C.point[k, p, 1] - B.x[a, 1]
+            rbx = C.point[k, p, 0] - B.x[b, 0]
+            rby = C.point[k, p, 1] - B.x[b, 1]
+            C.ra[k, p, 0] = rax
+            C.ra[k, p, 1] = ray
+            C.rb[k, p, 0] = rbx
+            C.rb[k, p, 1] = rby
+            rna = cross(rax, ray, nx, ny)
+            rnb = cross(rbx, rby, nx, ny)
+            kn = ima + imb + iia * rna * rna + iib * rnb * rnb
+            C.mass_n[k, p] = 1.0 / kn if kn > 0.0 else 0.0
+            # tangent t = (-ny, nx)
+            rta = cross(rax, ray, -ny, nx)
+            rtb = cross(rbx, rby, -ny, nx)
+            kt = ima + imb + iia * rta * rta + iib * rtb * rtb
+            C.mass_t[k, p] = 1.0 / kt if kt > 0.0 else 0.0
+            dvx, dvy = rel_velocity(B, a, b, rax, ray, rbx, rby)
+            C.vn0[k, p] = dvx * nx + dvy * ny
+            vt = -dvx * ny + dvy * nx
+            # Coulomb (seed eq. 23): static coefficient while sticking, dynamic once sliding
+            C.mu[k, p] = C.mu_s[k] if math.fabs(vt) <= stick_speed else C.mu_d[k]

@@ -1,0 +1,96 @@
+"""``soft_step``: the default mode — sub-stepping with soft contacts (Box2D v3 style).
+
+Per step: contact rows are prepared once; then for each of N sub-steps:
+integrate velocities, warm start, solve contacts softly (with bias), solve
+springs, integrate positions, relax (solve again without bias so the
+push-out leaves no velocity behind).  Finally one restitution pass.
+Sub-stepping gives the stiffness of a small time step at the price of one
+narrow phase per step (Catto, "Solver2D", 2024).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .._jit import kernel
+from ..settings import Setting, declare
+from . import SolverMode
+from .contact_prep import prepare_contacts
+from .motion import integrate_positions, integrate_velocities, reset_displacements
+from .soft_contact import apply_restitution, softness, solve_contacts, warm_start
+from .soft_springs import solve_springs
+
+
+@kernel
+def _zero_impulses(C, nc):
+    for k in range(nc):
+        for p in range(2):
+            C.jn[k, p] = 0.0
+            C.jt[k, p] = 0.0
+
+
+@kernel
+def soft_step(B, n, C, nc, S, ns, gx, gy, dt, substeps, iterations, hertz, zeta, push, warm, relax,
+              rest_threshold, stick_speed, DP, DQ, DC, DS):
+    h = dt / substeps
+    inv_h = 1.0 / h
+    # contacts against static bodies are twice as stiff (they carry the whole load)
+    hz = min(hertz, 0.25 * inv_h)
+    soft_dyn = softness(hz, zeta, h)
+    soft_static = softness(2.0 * hz, zeta, h)
+    prepare_contacts(B, C, nc, stick_speed)
+    if not warm:
+        _zero_impulses(C, nc)
+    reset_displacements(n, DP, DQ, DC, DS)
+    for _ in range(substeps):
+        integrate_velocities(B, n, gx, gy, h)
+        if ns > 0:
+            solve_springs(B, S, ns, h)
+        warm_start(B, C, nc)
+        for _ in range(iterations):
+            solve_contacts(B, C, nc, DP, DC, DS, inv_h, True, soft_dyn, soft_static, push)
+        integrate_positions(B, n, h, DP, DQ, DC, DS)
+        if relax:
+            solve_contacts(B, C, nc, DP, DC, DS, inv_h, False, soft_dyn, soft_static, push)
+    apply_restitution(B, C, nc, rest_threshold)
+
+
+class SoftStep(SolverMode):
+    name = "soft_step"
+    description = "Sub-stepped soft contacts with relax and restitution passes (Box2D v3 style); the default."
+    settings = declare(
+        Setting("substeps", 4, 1, 64, "sub-steps per step: more is stiffer and more accurate, and costs more"),
+        Setting("iterations", 1, 1, 32, "biased contact passes per sub-step"),
+        Setting("contact_hertz", 30.0, 1.0, 1000.0, "contact stiffness as a frequency (capped at a quarter of the sub-step rate)"),
+        Setting("damping_ratio", 10.0, 0.0, 100.0, "contact damping ratio (above 1 is overdamped: no bounce from overlap)"),
+        Setting("push_out_speed", 3.0, 0.0, 100.0, "largest speed (m/s) at which overlap is pushed apart"),
+        Setting("warm_starting", True, doc="start from last step's impulses (matched by contact features)"),
+        Setting("relax", True, doc="a pass without bias after each sub-step removes push-out velocity"),
+        Setting("restitution_threshold", 1.0, 0.0, 100.0, "impacts slower than this (m/s) do not bounce"),
+        Setting("stick_speed", 0.01, 0.0, 10.0, "tangential speed (m/s) below which static friction applies"),
+    )
+
+    def __init__(self):
+        self._alloc(64)
+
+    def _alloc(self, cap):
+        self.DP = np.zeros((cap, 2))
+        self.DQ = np.zeros(cap)
+        self.DC = np.ones(cap)
+        self.DS = np.zeros(cap)
+
+    def step(self, world, dt, p):
+        n = world._bodies.n
+        if n > len(self.DQ):
+            self._alloc(2 * n)
+        c = world._contacts
+        g = world._gravity
+        soft_step(world._bodies.view, n, c.cur, c.n, world._springs.view, world._springs.n,
+                  g[0], g[1], dt, p["substeps"], p["iterations"], p["contact_hertz"], p["damping_ratio"],
+                  p["push_out_speed"], p["warm_starting"], p["relax"], p["restitution_threshold"],
+                  p["stick_speed"], self.DP, self.DQ, self.DC, self.DS)
+
+    def stages(self, world):
+        out = ["integrate:symplectic_euler (sub-stepped)", "contacts:soft"]
+        if world._springs.n:
+            out.append("springs:soft")
+        return out
