@@ -1,0 +1,137 @@
+"""The narrow-phase kernel: every broad-phase pair -> sorted contact rows.
+
+Pairs are oriented by stable id (a = the lower id), so a row's key
+(id_a << 32) | id_b and its features survive slot changes from removals;
+pairs are visited in key order, so rows come out sorted and the warm-start
+lookup is a merge walk.  Each pair is computed in coordinates relative to
+a's centre of mass: world coordinates 10 km out would otherwise cost
+log10(1e4) digits of every depth (the shapes themselves are small).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .._jit import kernel
+from ..shapes import MAX_POLYGON_VERTICES
+from ..store import CIRCLE
+from .circles import circle_circle, polygon_circle
+from .pair import polygon_pair
+from .warmstart import seek, warm_start
+
+BIAS = 1e-3          # reference-face hysteresis, relative to the smaller body
+
+
+@kernel
+def pair_keys(B, pairs, npairs):
+    """Keys of the pairs oriented by id (lower id first)."""
+    keys = np.empty(npairs, np.int64)
+    for k in range(npairs):
+        ia = B.id[pairs[k, 0]]
+        ib = B.id[pairs[k, 1]]
+        if ia > ib:
+            ia, ib = ib, ia
+        keys[k] = (ia << 32) | ib
+    return keys
+
+
+@kernel
+def pair_margin(B, a, b, dt, spec):
+    """spec + dt (|v_a - v_b| + |w_a| r_a + |w_b| r_b): how close can get in a step."""
+    dv = math.hypot(B.v[a, 0] - B.v[b, 0], B.v[a, 1] - B.v[b, 1])
+    return spec + dt * (dv + abs(B.w[a]) * B.bound_r[a] + abs(B.w[b]) * B.bound_r[b])
+
+
+@kernel
+def _relative(V, B, i, ox, oy, out):
+    """Vertices of polygon i shifted by -(ox, oy) into ``out``; returns the view."""
+    s = B.vstart[i]
+    n = B.vcount[i]
+    for k in range(n):
+        out[k, 0] = V.world[s + k, 0] - ox
+        out[k, 1] = V.world[s + k, 1] - oy
+    return out[:n]
+
+
+@kernel
+def _manifold(B, V, a, b, method, margin, sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
+    """Dispatch on the shape pair; points are relative to a's centre."""
+    ox, oy = B.x[a, 0], B.x[a, 1]
+    bx, by = B.x[b, 0] - ox, B.x[b, 1] - oy
+    if B.shape[a] == CIRCLE and B.shape[b] == CIRCLE:
+        return circle_circle(0.0, 0.0, B.radius[a], bx, by, B.radius[b], margin, out_p, out_s, out_f)
+    if B.shape[b] == CIRCLE:
+        va = _relative(V, B, a, ox, oy, sc_a)
+        na = V.wnormal[B.vstart[a]:B.vstart[a] + B.vcount[a]]
+        return polygon_circle(va, na, bx, by, B.radius[b], margin, out_p, out_s, out_f)
+    vb = _relative(V, B, b, ox, oy, sc_b)
+    nb = V.wnormal[B.vstart[b]:B.vstart[b] + B.vcount[b]]
+    if B.shape[a] == CIRCLE:
+        c, nx, ny = polygon_circle(vb, nb, 0.0, 0.0, B.radius[a], margin, out_p, out_s, out_f)
+        return c, -nx, -ny
+    va = _relative(V, B, a, ox, oy, sc_a)
+    na = V.wnormal[B.vstart[a]:B.vstart[a] + B.vcount[a]]
+    bias = BIAS * min(B.bound_r[a], B.bound_r[b])
+    return polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p, out_s, out_f)
+
+
+@kernel
+def _write_row(C, row, B, a, b, key, count, nx, ny, out_p, out_s, out_f):
+    ox, oy = B.x[a, 0], B.x[a, 1]
+    C.a[row] = a
+    C.b[row] = b
+    C.key[row] = key
+    C.count[row] = count
+    C.normal[row, 0] = nx
+    C.normal[row, 1] = ny
+    for p in range(2):
+        live = p < count
+        C.point[row, p, 0] = out_p[p, 0] + ox if live else 0.0
+        C.point[row, p, 1] = out_p[p, 1] + oy if live else 0.0
+        C.depth[row, p] = -out_s[p] if live else 0.0
+        C.feature[row, p] = out_f[p] if live else -1
+        C.ra[row, p, 0] = 0.0
+        C.ra[row, p, 1] = 0.0
+        C.rb[row, p, 0] = 0.0
+        C.rb[row, p, 1] = 0.0
+        C.mass_n[row, p] = 0.0
+        C.mass_t[row, p] = 0.0
+        C.vn0[row, p] = 0.0
+        C.bias[row, p] = 0.0
+    # combined materials: the bouncier surface wins; friction is a geometric mean
+    C.e[row] = max(B.e[a], B.e[b])
+    C.mu_s[row] = math.sqrt(B.mu_s[a] * B.mu_s[b])
+    C.mu_d[row] = math.sqrt(B.mu_d[a] * B.mu_d[b])
+
+
+@kernel
+def collide_kernel(B, V, pairs, npairs, C, P, n_prev, method, dt, spec):
+    """Fill C (rows sorted by key, warm-started from P); returns the row count."""
+    keys = pair_keys(B, pairs, npairs)
+    order = np.argsort(keys)
+    sc_a = np.empty((MAX_POLYGON_VERTICES, 2))
+    sc_b = np.empty((MAX_POLYGON_VERTICES, 2))
+    sw = np.empty((3, 2))
+    si = np.empty((3, 2), np.int64)
+    lam = np.empty(3)
+    poly = np.empty((2 * MAX_POLYGON_VERTICES + 4, 2))
+    out_p = np.zeros((2, 2))
+    out_s = np.zeros(2)
+    out_f = np.zeros(2, np.int32)
+    row = 0
+    ptr = 0
+    for k in order:
+        a, b = pairs[k, 0], pairs[k, 1]
+        if B.id[a] > B.id[b]:
+            a, b = b, a
+        margin = pair_margin(B, a, b, dt, spec)
+        count, nx, ny = _manifold(B, V, a, b, method, margin, sc_a, sc_b, sw, si, lam, poly,
+                                  out_p, out_s, out_f)
+        if count == 0:
+            continue
+        _write_row(C, row, B, a, b, keys[k], count, nx, ny, out_p, out_s, out_f)
+        ptr = seek(P, n_prev, ptr, keys[k])
+        warm_start(C, row, P, n_prev, ptr)
+        row += 1
+    return row

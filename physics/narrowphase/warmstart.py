@@ -1,0 +1,35 @@
+"""Warm starting: carry accumulated impulses over from the previous step.
+
+Rows of both steps are sorted by key, so the previous row of a pair is found
+by a merge walk (one pointer that only moves forward).  Impulses are copied
+per point only where the feature id matches: a point made by other features
+is a different contact, and reusing its impulse would inject energy
+(Catto, "Iterative dynamics with temporal coherence", GDC 2005).
+"""
+from __future__ import annotations
+
+from .._jit import kernel
+
+
+@kernel
+def seek(P, n_prev, ptr, key):
+    """Advance ``ptr`` to the first previous row with key >= ``key``."""
+    while ptr < n_prev and P.key[ptr] < key:
+        ptr += 1
+    return ptr
+
+
+@kernel
+def warm_start(C, row, P, n_prev, ptr):
+    """Fill jn/jt of row ``row`` from previous row ``ptr`` (if same key)."""
+    found = ptr < n_prev and P.key[ptr] == C.key[row]
+    for p in range(2):
+        C.jn[row, p] = 0.0
+        C.jt[row, p] = 0.0
+        if not found or p >= C.count[row]:
+            continue
+        for q in range(P.count[ptr]):
+            if P.feature[ptr, q] == C.feature[row, p]:
+                C.jn[row, p] = P.jn[ptr, q]
+                C.jt[row, p] = P.jt[ptr, q]
+                break
