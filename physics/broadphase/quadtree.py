@@ -23,7 +23,7 @@ from .._jit import kernel
 from .filter import can_pair, overlap, push
 from .order import sort_pairs
 
-LEAF_SIZE = 8
+LEAF_SIZE = 32
 MAX_DEPTH = 24
 # node info columns
 START, COUNT, DEPTH = 0, 1, 2
