@@ -49,7 +49,7 @@ def best_aligned_face(vn, nx, ny):
 
 @kernel
 def reference_from_normal(va, na, vb, nb, nx, ny, bias):
-    """(flip, face) from a direction n (A to B), e.g. EPA's or GJK's.
+    """(flip, face, separation) from a direction n (A to B), e.g. EPA's or GJK's.
 
     The candidates are the face of A best aligned with n and the face of B best
     aligned with -n; their exact separations go through the same biased choice
@@ -59,8 +59,7 @@ def reference_from_normal(va, na, vb, nb, nx, ny, bias):
     fb = best_aligned_face(nb, -nx, -ny)
     sa = face_separation(va, na, fa, vb)
     sb = face_separation(vb, nb, fb, va)
-    flip, face, _ = choose_reference(sa, fa, sb, fb, bias)
-    return flip, face
+    return choose_reference(sa, fa, sb, fb, bias)
 
 
 @kernel

@@ -22,12 +22,18 @@ METHODS = {"sat": SAT, "gjk": GJK}
 @kernel
 def polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p, out_s, out_f):
     """Returns (count, nx, ny); count 0 when the pair is apart beyond ``margin``."""
+    flip, face = 0, 0
+    use_sat = method != GJK
     if method == GJK:
         sep, nx, ny = penetration(va, vb, sw, si, lam, poly)
         if sep > margin:
             return 0, 0.0, 0.0
-        flip, face = reference_from_normal(va, na, vb, nb, nx, ny, bias)
-    else:
+        flip, face, s = reference_from_normal(va, na, vb, nb, nx, ny, bias)
+        # apart shapes whose closest features are two vertices: the faces next
+        # to n need not separate (a long sliver reaching past a corner); the
+        # manifold then needs a face that does, which SAT finds
+        use_sat = sep > 0.0 and s < 0.0
+    if use_sat:
         sa, fa = max_separation(va, na, vb)
         if sa > margin:
             return 0, 0.0, 0.0
