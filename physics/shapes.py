@@ -67,7 +67,7 @@ class Polygon(Shape):
         if n > MAX_POLYGON_VERTICES:
             raise ValueError(f"polygon has {n} vertices; at most {MAX_POLYGON_VERTICES} are supported")
         scale = float(np.max(np.abs(pts - pts.mean(axis=0)))) or 0.0
-        area = _signed_area(pts)
+        area = _signed_area(pts - pts.mean(axis=0))  # centred: see centroid
         if scale == 0.0 or abs(area) <= 1e-12 * scale * scale:
             raise ValueError("polygon has zero area (all vertices coincide or lie on one line)")
         if area < 0:
@@ -109,7 +109,7 @@ class Polygon(Shape):
         Collinear and repeated points are dropped.
         """
         pts = _as_points(points, "points")
-        h = convex_hull(pts)
+        h = _prune_degenerate(convex_hull(pts))
         if len(h) < 3:
             raise ValueError("points have no area: their convex hull is a point or a segment")
         if len(h) > MAX_POLYGON_VERTICES:
@@ -129,15 +129,18 @@ class Polygon(Shape):
 
     @property
     def area(self) -> float:
-        return _signed_area(self.vertices)
+        return _signed_area(self.vertices - self.vertices.mean(axis=0))
 
     @property
     def centroid(self) -> np.ndarray:
-        p = self.vertices
+        # taken about the vertex mean: cross products of raw coordinates far
+        # from the origin cancel catastrophically (off by 4e-3 m at 1e5 m)
+        o = self.vertices.mean(axis=0)
+        p = self.vertices - o
         q = np.roll(p, -1, axis=0)
         cr = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
         a = 0.5 * cr.sum()
-        return ((p + q) * cr[:, None]).sum(axis=0) / (6.0 * a)
+        return o + ((p + q) * cr[:, None]).sum(axis=0) / (6.0 * a)
 
     def mass_properties(self, density: float):
         """Mass, centroid and inertia about the centroid.
@@ -255,3 +258,29 @@ def convex_hull(pts: np.ndarray) -> np.ndarray:
             upper.pop()
         upper.append(pt)
     return np.array(lower[:-1] + upper[:-1])
+
+
+def _prune_degenerate(h: np.ndarray) -> np.ndarray:
+    """Drop hull vertices that ``Polygon`` would reject as repeated or collinear.
+
+    The monotone chain keeps any exactly positive turn, so nearly coincident or
+    nearly collinear points (1e-94 off a line, say) survive it and then fail
+    validation; the 4x margin keeps the two tolerances from disagreeing after
+    a removal shifts the vertex mean.
+    """
+    if len(h) < 3:
+        return h
+    scale = float(np.max(np.abs(h - h.mean(axis=0))))
+    pts = [np.asarray(v) for v in h]
+    changed = True
+    while changed and len(pts) >= 3:
+        changed = False
+        for i in range(len(pts)):
+            e0 = pts[i] - pts[i - 1]
+            e1 = pts[(i + 1) % len(pts)] - pts[i]
+            l0, l1 = math.hypot(*e0), math.hypot(*e1)
+            if min(l0, l1) <= 4e-12 * scale or (e0[0] * e1[1] - e0[1] * e1[0]) <= 4 * _COLLINEAR_SINE * l0 * l1:
+                del pts[i]
+                changed = True
+                break
+    return np.array(pts).reshape(-1, 2)
