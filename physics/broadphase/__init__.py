@@ -34,6 +34,7 @@ class _Scratch:
         self.qt_reg = np.empty((0, 4), np.float64)
         self.qt_info = np.empty((0, 3), np.int32)
         self.qt_items = np.empty(0, np.int32)
+        self.qt_box = np.empty((0, 4), np.float64)
         self._bodies(64)
 
     def _bodies(self, cap):
@@ -72,8 +73,8 @@ def _run(B, n, method, pairs):
     if method == "sweep":
         return sweep_pairs(B, n, _S.state, _S.order, _S.key, _S.b0, _S.b1, _S.bstart,
                            _S.ent, _S.tmp, _S.head, pairs)
-    k, _S.qt_reg, _S.qt_info, _S.qt_items = quadtree_pairs(
-        B, n, _S.qt_reg, _S.qt_info, _S.qt_items, _S.tmp, _S.head, pairs)
+    k, _S.qt_reg, _S.qt_info, _S.qt_items, _S.qt_box = quadtree_pairs(
+        B, n, _S.qt_reg, _S.qt_info, _S.qt_items, _S.qt_box, _S.tmp, _S.head, pairs)
     return k
 
 
@@ -101,8 +102,8 @@ def quadtree_cells(B, n):
     if n == 0:
         return np.empty((0, 4), np.float64)
     _S.ensure(n, 0)
-    _, nodes, _S.qt_reg, _S.qt_info, _S.qt_items = _build_quadtree(
-        B, n, _S.qt_reg, _S.qt_info, _S.qt_items, _S.tmp, False)
+    _, nodes, _S.qt_reg, _S.qt_info, _S.qt_items, _S.qt_box = _build_quadtree(
+        B, n, _S.qt_reg, _S.qt_info, _S.qt_items, _S.qt_box, _S.tmp, False)
     box = B.aabb[:n]
     ok = np.all(np.isfinite(box), axis=1)
     if not ok.any():
@@ -113,3 +114,6 @@ def quadtree_cells(B, n):
     cells[:, :2] = np.clip(cells[:, :2], lo, hi)
     cells[:, 2:] = np.clip(cells[:, 2:], lo, hi)
     return cells
+
+
+resolve_method = resolve  # the name the pipeline's `info` looks for

@@ -39,17 +39,16 @@ def _grow(a, need):
 
 
 @kernel
-def _split_point(aabb, items, s, c, reg):
+def _split_point(box, s, c, reg):
     ux0 = math.inf
     uy0 = math.inf
     ux1 = -math.inf
     uy1 = -math.inf
     for a in range(s, s + c):
-        i = items[a]
-        ux0 = min(ux0, aabb[i, 0])
-        uy0 = min(uy0, aabb[i, 1])
-        ux1 = max(ux1, aabb[i, 2])
-        uy1 = max(uy1, aabb[i, 3])
+        ux0 = min(ux0, box[a, 0])
+        uy0 = min(uy0, box[a, 1])
+        ux1 = max(ux1, box[a, 2])
+        uy1 = max(uy1, box[a, 3])
     ux0 = max(ux0, reg[0])
     uy0 = max(uy0, reg[1])
     ux1 = min(ux1, reg[2])
@@ -58,15 +57,14 @@ def _split_point(aabb, items, s, c, reg):
 
 
 @kernel
-def _quadrant_counts(aabb, items, s, c, sx, sy):
+def _quadrant_counts(box, s, c, sx, sy):
     """Boxes per child (0 left-bottom, 1 right-bottom, 2 left-top, 3 right-top)."""
     c0 = c1 = c2 = c3 = 0
     for a in range(s, s + c):
-        i = items[a]
-        left = aabb[i, 0] < sx
-        right = aabb[i, 2] >= sx
-        bottom = aabb[i, 1] < sy
-        top = aabb[i, 3] >= sy
+        left = box[a, 0] < sx
+        right = box[a, 2] >= sx
+        bottom = box[a, 1] < sy
+        top = box[a, 3] >= sy
         c0 += left and bottom
         c1 += right and bottom
         c2 += left and top
@@ -75,35 +73,41 @@ def _quadrant_counts(aabb, items, s, c, sx, sy):
 
 
 @kernel
-def _leaf_pairs(B, items, s, c, reg, tmp, k):
-    aabb = B.aabb
+def _leaf_pairs(B, items, box, s, c, reg, tmp, k):
     for a in range(s, s + c):
         i = items[a]
         for b in range(a + 1, s + c):
-            j = items[b]
-            if not (overlap(aabb, i, j) and can_pair(B.kind, B.awake, i, j)):
+            if not overlap(box, a, b):
                 continue
-            px = max(aabb[i, 0], aabb[j, 0])
-            py = max(aabb[i, 1], aabb[j, 1])
+            j = items[b]
+            if not can_pair(B.kind, B.awake, i, j):
+                continue
+            px = max(box[a, 0], box[b, 0])
+            py = max(box[a, 1], box[b, 1])
             if reg[0] <= px < reg[2] and reg[1] <= py < reg[3]:
                 k = push(tmp, k, i, j)
     return k
 
 
 @kernel
-def build(B, n, reg, info, items, tmp, emit):
+def build(B, n, reg, info, items, box, tmp, emit):
     """Build the tree (and, when ``emit``, collect pairs into ``tmp``).
 
-    Returns (pair count, node count, reg, info, items): the scratch arrays
-    come back grown when the tree needed more room.
+    Returns (pair count, node count, reg, info, items, box): the scratch
+    arrays come back grown when the tree needed more room.  Each entry of
+    ``items`` carries a copy of its box in ``box`` so that every pass over a
+    node reads memory in order (random slot order cost 3x at 10k bodies).
     """
     aabb = B.aabb
     m = 0
     items = _grow(items, n)
+    box = _grow(box, n)
     for i in range(n):
         if (math.isfinite(aabb[i, 0]) and math.isfinite(aabb[i, 1])
                 and math.isfinite(aabb[i, 2]) and math.isfinite(aabb[i, 3])):
             items[m] = i
+            for d in range(4):
+                box[m, d] = aabb[i, d]
             m += 1
     reg = _grow(reg, 1)
     info = _grow(info, 1)
@@ -125,15 +129,17 @@ def build(B, n, reg, info, items, tmp, emit):
         sx = sy = 0.0
         counts = (0, 0, 0, 0)
         if not leaf:
-            sx, sy = _split_point(aabb, items, s, c, reg[node])
-            counts = _quadrant_counts(aabb, items, s, c, sx, sy)
+            sx, sy = _split_point(box, s, c, reg[node])
+            counts = _quadrant_counts(box, s, c, sx, sy)
             leaf = max(counts) >= c
         if leaf:
             if emit:
-                k = _leaf_pairs(B, items, s, c, reg[node], tmp, k)
+                k = _leaf_pairs(B, items, box, s, c, reg[node], tmp, k)
             node += 1
             continue
-        items = _grow(items, top + counts[0] + counts[1] + counts[2] + counts[3])
+        need = top + counts[0] + counts[1] + counts[2] + counts[3]
+        items = _grow(items, need)
+        box = _grow(box, need)
         reg = _grow(reg, nodes + 4)
         info = _grow(info, nodes + 4)
         r0, r1, r2, r3 = reg[node, 0], reg[node, 1], reg[node, 2], reg[node, 3]
@@ -149,22 +155,23 @@ def build(B, n, reg, info, items, tmp, emit):
             info[nodes, START] = top
             info[nodes, DEPTH] = info[node, DEPTH] + 1
             for a in range(s, s + c):
-                i = items[a]
-                inx = aabb[i, 2] >= sx if right else aabb[i, 0] < sx
-                iny = aabb[i, 3] >= sy if upper else aabb[i, 1] < sy
+                inx = box[a, 2] >= sx if right else box[a, 0] < sx
+                iny = box[a, 3] >= sy if upper else box[a, 1] < sy
                 if inx and iny:
-                    items[top] = i
+                    items[top] = items[a]
+                    for d in range(4):
+                        box[top, d] = box[a, d]
                     top += 1
             info[nodes, COUNT] = top - info[nodes, START]
             nodes += 1
         node += 1
-    return k, nodes, reg, info, items
+    return k, nodes, reg, info, items, box
 
 
 @kernel
-def quadtree_pairs(B, n, reg, info, items, tmp, head, pairs):
-    """Pairs sorted by (i, j); returns (count, reg, info, items) like ``build``."""
-    k, _, reg, info, items = build(B, n, reg, info, items, tmp, True)
+def quadtree_pairs(B, n, reg, info, items, box, tmp, head, pairs):
+    """Pairs sorted by (i, j); returns (count, reg, info, items, box) like ``build``."""
+    k, _, reg, info, items, box = build(B, n, reg, info, items, box, tmp, True)
     if k <= tmp.shape[0] and k <= pairs.shape[0]:
         sort_pairs(tmp, k, n, head, pairs)
-    return k, reg, info, items
+    return k, reg, info, items, box
