@@ -17,11 +17,12 @@ from .sweep import sweep_pairs
 
 METHODS = ("auto", "sweep", "quadtree", "brute")
 
-# "auto" uses brute force below this many bodies and sweep above.  Measured
-# with bench/collision.py (random boxes and pyramids, 2 cores): brute and
-# sweep cost the same near 40 bodies; quadtree was slower than sweep at
-# every size.
-AUTO_BRUTE_BELOW = 40
+# "auto" uses brute force below this many bodies and sweep from here on.
+# Measured with `python -m bench.collision` (random boxes and pyramids, 2-core
+# VM): the two cost the same (10-25 us per call, mostly call overhead) between
+# about 100 and 190 bodies; above that brute force grows quadratically (0.37-0.7
+# ms at 1k vs 0.04-0.07 for sweep).  Quadtree was slower than sweep at every size.
+AUTO_BRUTE_BELOW = 128
 
 
 class _Scratch:
