@@ -1,0 +1,200 @@
+"""The scene format as a JSON Schema (draft 2020-12), with every default.
+
+This module is the source of truth: the published ``scenes/stelkropp.schema.json``
+is written from it by ``scenes/make_scenes.py --schema`` (a test keeps the two
+equal), so an installed package validates without the repository's files.
+The schema checks structure, types and ranges; what it cannot express
+(convexity, names that refer to each other, the solver's own settings) is
+checked by hand in ``physics/scene_checks.py``.
+"""
+from __future__ import annotations
+
+FORMAT = "stelkropp.scene"
+VERSION = 1
+SCHEMA_FILE = "stelkropp.schema.json"
+
+# refuse before parsing / before validating, so a hostile file cannot eat the machine
+MAX_FILE_BYTES = 50 * 1024 * 1024
+MAX_BODIES = 1_000_000
+
+# the World's own choices (physics/world.py); a test keeps these in step
+INTEGRATORS = ["euler", "symplectic_euler", "rk4"]
+BROADPHASES = ["auto", "sweep", "quadtree", "brute"]
+NARROWPHASES = ["sat", "gjk"]
+KINDS = ["dynamic", "static", "kinematic"]
+
+WORLD_DEFAULTS = {
+    "gravity": [0.0, -9.81],
+    "dt": 1.0 / 60.0,
+    "solver": "soft_step",
+    "settings": {},
+    "integrator": "symplectic_euler",
+    "sleeping": True,
+    "broadphase": "auto",
+    "narrowphase": "sat",
+}
+BODY_DEFAULTS = {
+    "name": None,
+    "kind": "dynamic",
+    "angle": 0.0,
+    "velocity": [0.0, 0.0],
+    "angular_velocity": 0.0,
+    "density": 1.0,
+    "restitution": 0.0,
+    "friction": 0.6,
+}
+# rest_length None: the distance between the anchors when the scene is built
+SPRING_DEFAULTS = {
+    "name": None,
+    "anchor_a": [0.0, 0.0],
+    "anchor_b": [0.0, 0.0],
+    "damping": 0.0,
+    "rest_length": None,
+}
+
+
+def _num(doc, **kw):
+    return {"type": "number", "description": doc, **kw}
+
+
+def _vec(doc, **kw):
+    return {"type": "array", "description": doc, "prefixItems": [{"type": "number"}, {"type": "number"}],
+            "items": False, "minItems": 2, **kw}
+
+
+def _name(doc):
+    return {"type": "string", "minLength": 1, "description": doc}
+
+
+_SHAPE = {
+    "type": "object",
+    "description": "Exactly one of box, polygon, regular, circle.  Vertices are in body coordinates (metres).",
+    "minProperties": 1,
+    "maxProperties": 1,
+    "additionalProperties": False,
+    "properties": {
+        "box": _vec("[width, height] of a box centred on the body origin",
+                    prefixItems=[{"type": "number", "exclusiveMinimum": 0}] * 2),
+        "polygon": {"type": "array", "description": "convex polygon vertices [[x, y], ...], either winding, 3..64",
+                    "minItems": 3, "maxItems": 64, "items": {"$ref": "#/$defs/vec2"}},
+        "regular": {"type": "object", "description": "regular polygon with a flat bottom edge",
+                    "required": ["sides", "radius"], "additionalProperties": False,
+                    "properties": {"sides": {"type": "integer", "minimum": 3, "maximum": 64},
+                                   "radius": _num("circumradius (m)", exclusiveMinimum=0)}},
+        "circle": {"type": ["number", "object"],
+                   "description": "radius (m), or {radius, offset} for a disc off the body origin",
+                   "exclusiveMinimum": 0, "required": ["radius"], "additionalProperties": False,
+                   "properties": {"radius": _num("radius (m)", exclusiveMinimum=0),
+                                  "offset": _vec("centre in body coordinates", default=[0.0, 0.0])}},
+    },
+}
+
+_FRICTION = {
+    "type": ["number", "object"],
+    "description": "Coulomb coefficient: one number (static = dynamic) or {static, dynamic}",
+    "default": BODY_DEFAULTS["friction"],
+    # minimum applies to numbers only, properties to objects only: no oneOf, so errors stay specific
+    "minimum": 0,
+    "required": ["static", "dynamic"],
+    "additionalProperties": False,
+    "properties": {"static": _num("static coefficient", minimum=0), "dynamic": _num("dynamic coefficient", minimum=0)},
+}
+
+_BODY = {
+    "type": "object",
+    "required": ["shape", "position"],
+    "additionalProperties": False,
+    "properties": {
+        "name": _name("unique body name (springs refer to bodies by name); optional"),
+        "kind": {"enum": KINDS, "default": BODY_DEFAULTS["kind"],
+                 "description": "dynamic, static (never moves) or kinematic (moves with its velocity only)"},
+        "shape": {"$ref": "#/$defs/shape"},
+        "position": _vec("body origin in world coordinates (m)"),
+        "angle": _num("rotation about the body origin (rad, counter-clockwise)", default=0.0),
+        "velocity": _vec("velocity of the centre of mass (m/s); ignored for static bodies", default=[0.0, 0.0]),
+        "angular_velocity": _num("rad/s, counter-clockwise; ignored for static bodies", default=0.0),
+        "density": _num("kg/m^2", exclusiveMinimum=0, default=BODY_DEFAULTS["density"]),
+        "restitution": _num("bounciness 0..1 (contacts take the larger of the two)", minimum=0, maximum=1,
+                            default=BODY_DEFAULTS["restitution"]),
+        "friction": {"$ref": "#/$defs/friction"},
+    },
+}
+
+_SPRING = {
+    "type": "object",
+    "required": ["a", "b", "stiffness"],
+    "additionalProperties": False,
+    "properties": {
+        "name": _name("unique spring name; optional"),
+        "a": _name("name of the first body"),
+        "b": {"type": ["string", "null"], "minLength": 1,
+              "description": "name of the second body, or null: anchor_b is then a world point"},
+        "anchor_a": _vec("attachment on a, in a's body coordinates (m)", default=[0.0, 0.0]),
+        "anchor_b": _vec("attachment on b (b's body coordinates), or the world point when b is null",
+                         default=[0.0, 0.0]),
+        "stiffness": _num("N/m", minimum=0),
+        "damping": _num("N s/m along the spring axis", minimum=0, default=0.0),
+        "rest_length": _num("m; default: the distance between the anchors when the scene is built", minimum=0),
+    },
+}
+
+_WORLD = {
+    "type": "object",
+    "additionalProperties": False,
+    "properties": {
+        "gravity": _vec("m/s^2", default=WORLD_DEFAULTS["gravity"]),
+        "dt": _num("time step (s)", exclusiveMinimum=0, default=WORLD_DEFAULTS["dt"]),
+        "solver": {"type": "string", "default": WORLD_DEFAULTS["solver"],
+                   "description": "solver mode: soft_step, sequential_impulse, impulse, penalty, hybrid, xpbd "
+                                  "(checked against the modes this build has)"},
+        "settings": {"type": "object", "default": {},
+                     "description": "the chosen solver's parameters (names, ranges and defaults are declared by "
+                                    "each mode; `python -m physics info` lists them); omitted ones take the "
+                                    "mode's defaults",
+                     "additionalProperties": {"type": ["number", "boolean", "string"]}},
+        "integrator": {"enum": INTEGRATORS, "default": WORLD_DEFAULTS["integrator"],
+                       "description": "used by the modes that integrate forces explicitly"},
+        "sleeping": {"type": "boolean", "default": True, "description": "resting islands sleep"},
+        "broadphase": {"enum": BROADPHASES, "default": "auto", "description": "auto picks by body count"},
+        "narrowphase": {"enum": NARROWPHASES, "default": "sat", "description": "polygon-polygon test"},
+    },
+}
+
+_CAMERA = {
+    "type": "object",
+    "description": "Where the sandbox looks when it opens the scene (ignored by the physics)",
+    "additionalProperties": False,
+    "properties": {
+        "center": _vec("world point at the middle of the view (m)"),
+        "zoom": _num("pixels per metre", exclusiveMinimum=0),
+    },
+}
+
+SCHEMA = {
+    "$schema": "https://json-schema.org/draft/2020-12/schema",
+    "title": "Stelkropp scene",
+    "description": "A 2D rigid-body scene for Stelkropp.  Units: metres, kilograms, seconds, radians.",
+    "type": "object",
+    "required": ["format", "version", "bodies"],
+    "additionalProperties": False,
+    "properties": {
+        "$schema": {"type": "string", "description": "path or URL of this schema (for editors)"},
+        "format": {"const": FORMAT},
+        "version": {"const": VERSION},
+        "name": {"type": "string", "description": "title shown in the sandbox"},
+        "description": {"type": "string", "description": "what the scene demonstrates"},
+        "world": {"$ref": "#/$defs/world"},
+        "camera": {"$ref": "#/$defs/camera"},
+        "bodies": {"type": "array", "items": {"$ref": "#/$defs/body"}},
+        "springs": {"type": "array", "default": [], "items": {"$ref": "#/$defs/spring"}},
+    },
+    "$defs": {
+        "vec2": _vec("[x, y]"),
+        "shape": _SHAPE,
+        "friction": _FRICTION,
+        "body": _BODY,
+        "spring": _SPRING,
+        "world": _WORLD,
+        "camera": _CAMERA,
+    },
+}
