@@ -1,0 +1,111 @@
+"""What the seed's three modes (impulse, penalty, hybrid) share.
+
+Each step is: save the step-start state, prepare the contact rows (anchors,
+effective masses), integrate the force generators with the world's
+integrator (sub-stepped when a spring or a penalty contact is too stiff for
+it), then resolve contacts: the seed moves first and responds afterwards.
+The mode's own kernel makes those calls; this module holds the settings they
+have in common, the work arrays, and the sub-step count.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import SimulationError
+from ..integrators import LIMITS, METHODS, allocate_work, spring_rate, substeps_for
+from ..settings import Setting
+from . import SolverMode
+
+NO_PENALTY = np.zeros(4)
+
+
+def share_factor(method: str, substeps: int) -> float:
+    """Displacement per unit velocity change when the change comes from a constant force
+    over the step (see seed_impulse.position_share), in units of dt."""
+    if method == "rk4":
+        return 0.5
+    if method == "symplectic_euler":
+        return (substeps + 1) / (2.0 * substeps)
+    return (substeps - 1) / (2.0 * substeps)
+
+
+def auto_speed(value: float, world, dt: float) -> float:
+    """A speed setting of -1 means three times the speed gained falling for one step."""
+    if value >= 0.0:
+        return value
+    return max(3.0 * float(np.hypot(*world._gravity)) * dt, 0.05)
+
+
+COMMON = (
+    Setting("max_substeps", 32, 1, 1024,
+            "cap on automatic sub-steps (stiff springs / contacts); a step that would need more "
+            "raises SimulationError instead of blowing up"),
+    Setting("stick_speed", 0.01, 0.0, 10.0,
+            "tangential speed (m/s) below which a point counts as sticking: static friction mu_s"),
+)
+
+IMPULSE_SETTINGS = (
+    Setting("iterations", 10, 1, 200, "passes over the contact points per step (eq. 15 accumulated)"),
+    Setting("projection", "linear", doc="push-out after the impulses: linear (seed 3.2), "
+            "nonlinear (3.3, translation + explicit rotation) or none",
+            choices=("linear", "nonlinear", "none")),
+    Setting("projection_iterations", 4, 1, 100, "passes of the push-out over the contacts"),
+    Setting("allowed_penetration", 0.0005, 0.0, 0.1, "depth (m) the push-out leaves in place"),
+    Setting("min_linear_share", 0.2, 0.0, 1.0,
+            "lower bound on the linear part of the non-linear push-out (seed 3.3, deep penetration)"),
+    Setting("energy_correction", True,
+            doc="seed eq. 2: remove the speed gravity added over the penetration before bouncing"),
+)
+
+PENALTY_SETTINGS = (
+    Setting("contact_hertz", 25.0, 1.0, 500.0,
+            "penalty spring frequency; sinking under gravity is about g / (2 (2 pi f)^2 m_eff/m) "
+            "(0.5 mm for a resting 1 m box at 25 Hz)"),
+    Setting("damping_ratio", 1.0, 0.0, 10.0,
+            "penalty damping ratio for e = 0 (critical); bouncier contacts use the ratio that "
+            "gives their restitution"),
+)
+
+
+class SeedMode(SolverMode):
+    uses_integrator = True
+
+    def __init__(self):
+        self.R = allocate_work(64)
+
+    def work(self, n: int):
+        if n > len(self.R.Q0):
+            self.R = allocate_work(2 * n)
+        return self.R
+
+    def substeps(self, world, dt: float, p: dict, contact_rate: float = 0.0) -> int:
+        """Sub-steps for the stiffest spring / penalty contact, within max_substeps."""
+        rate = contact_rate
+        if world._springs.n:
+            rate = max(rate, spring_rate(world._bodies.view, world._springs.view, world._springs.n))
+        if rate <= 0.0:
+            return 1
+        need = substeps_for(rate, dt, world.integrator)
+        if need > p["max_substeps"]:
+            raise SimulationError(
+                f"solver '{self.name}': a spring or contact of rate {rate:.4g} 1/s needs {need} sub-steps "
+                f"of {world.integrator} at dt={dt:.4g} s (omega h <= {LIMITS[world.integrator]}), more "
+                f"than max_substeps={p['max_substeps']}; raise max_substeps, lower the stiffness or dt",
+                stage="solve")
+        return need
+
+    @staticmethod
+    def method(world) -> int:
+        return METHODS[world.integrator]
+
+    def force_stages(self, world) -> list[str]:
+        out = ["forces:gravity"]
+        if world._springs.n:
+            out.append("forces:springs")
+        return out + [f"integrate:{world.integrator}"]
+
+
+def penalty_params(p: dict) -> np.ndarray:
+    return np.array([1.0, 2.0 * math.pi * p["contact_hertz"], p["damping_ratio"], p["stick_speed"]])
