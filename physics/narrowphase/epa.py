@@ -28,14 +28,14 @@ from .support import extent, support_index
 EPA_EPS = 1e-12      # relative stop tolerance on the support-point gain
 
 
-@kernel
+@kernel(inline="always")
 def _support_w(va, vb, dx, dy):
     ia = support_index(va, -dx, -dy)
     ib = support_index(vb, dx, dy)
     return vb[ib, 0] - va[ia, 0], vb[ib, 1] - va[ia, 1]
 
 
-@kernel
+@kernel(inline="always")
 def _far_from_line(va, vb, ax, ay, bx, by, tol):
     """A support point of M off the line through a, b (both sides tried)."""
     px, py = -(by - ay), bx - ax
@@ -48,7 +48,7 @@ def _far_from_line(va, vb, ax, ay, bx, by, tol):
     return best_x, best_y
 
 
-@kernel
+@kernel(_nrt=False)
 def start_polytope(va, vb, sw, count, poly, tol):
     """Grow GJK's simplex (origin inside or on it) into a CCW triangle in ``poly``.
 
@@ -74,7 +74,7 @@ def start_polytope(va, vb, sw, count, poly, tol):
     return 3
 
 
-@kernel
+@kernel(inline="always")
 def _nearest_edge(poly, n):
     """(index, distance, nx, ny) of the CCW edge nearest the origin."""
     best = -1
@@ -96,7 +96,7 @@ def _nearest_edge(poly, n):
     return best, bd, bnx, bny
 
 
-@kernel
+@kernel(_nrt=False)
 def expand(va, vb, poly, n, tol):
     """Run EPA from the CCW polytope poly[:n]; returns (depth, nx, ny)."""
     cap = poly.shape[0]
@@ -116,7 +116,7 @@ def expand(va, vb, poly, n, tol):
         n += 1
 
 
-@kernel
+@kernel(_nrt=False)
 def penetration(va, vb, sw, si, lam, poly):
     """GJK, then EPA when overlapping; returns (separation, nx, ny).
 

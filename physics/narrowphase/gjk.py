@@ -22,7 +22,7 @@ REL_EPS = 1e-12      # relative tolerance of the termination test (sec. 3.2)
 TOUCH_EPS = 1e-10    # |v| below TOUCH_EPS * extent counts as touching
 
 
-@kernel
+@kernel(inline="always")
 def _add_support(va, vb, sw, si, k, dx, dy):
     """Put the support point of M in direction (dx, dy) into simplex slot k."""
     ia = support_index(va, -dx, -dy)
@@ -33,7 +33,9 @@ def _add_support(va, vb, sw, si, k, dx, dy):
     si[k, 1] = ib
 
 
-@kernel
+# _nrt=False (also in epa.py): called once per pair from the narrow-phase loop;
+# allocation-free, so it can skip the runtime's per-array reference counting
+@kernel(_nrt=False)
 def gjk(va, vb, sw, si, lam):
     """Distance from A to B; returns (count, distance, vx, vy).
 

@@ -19,7 +19,7 @@ SAT, GJK = 0, 1
 METHODS = {"sat": SAT, "gjk": GJK}
 
 
-@kernel
+@kernel(inline="always")
 def polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p, out_s, out_f):
     """Returns (count, nx, ny); count 0 when the pair is apart beyond ``margin``."""
     flip, face = 0, 0

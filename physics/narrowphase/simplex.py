@@ -15,7 +15,7 @@ from __future__ import annotations
 from .._jit import kernel
 
 
-@kernel
+@kernel(inline="always")
 def _keep(sw, si, lam, dst, src, weight):
     sw[dst, 0] = sw[src, 0]
     sw[dst, 1] = sw[src, 1]
@@ -24,7 +24,7 @@ def _keep(sw, si, lam, dst, src, weight):
     lam[dst] = weight
 
 
-@kernel
+@kernel(inline="always")
 def _segment(sw, si, lam, i, j):
     """Closest point on segment w_i w_j; compacts the simplex to slots 0..c-1."""
     ax, ay = sw[i, 0], sw[i, 1]
@@ -44,7 +44,7 @@ def _segment(sw, si, lam, i, j):
     return 2
 
 
-@kernel
+@kernel(inline="always")
 def _triangle(sw, si, lam):
     """Closest point on triangle w0 w1 w2 (Ericson 5.1.5 region order)."""
     ax, ay = sw[0, 0], sw[0, 1]
@@ -82,7 +82,7 @@ def _triangle(sw, si, lam):
     return 3
 
 
-@kernel
+@kernel(inline="always")
 def reduce_simplex(sw, si, lam, count):
     """Reduce the simplex to its closest feature; returns (count, vx, vy).
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 from .._jit import kernel
 
 
-@kernel
+@kernel(inline="always")
 def seek(P, n_prev, ptr, key):
     """Advance ``ptr`` to the first previous row with key >= ``key``."""
     while ptr < n_prev and P.key[ptr] < key:
@@ -19,7 +19,7 @@ def seek(P, n_prev, ptr, key):
     return ptr
 
 
-@kernel
+@kernel(inline="always")
 def warm_start(C, row, P, n_prev, ptr):
     """Fill jn/jt of row ``row`` from previous row ``ptr`` (if same key)."""
     found = ptr < n_prev and P.key[ptr] == C.key[row]
