@@ -1,0 +1,115 @@
+"""Where a step's time goes: each pipeline stage timed in place.
+
+    python -m bench.profile [--scene pyramid20|pyramid40|rain] [--solver soft_step] [--steps 300]
+
+The world steps normally (``world.step()``); the stage entry points the
+pipeline calls -- ``Pipeline.refresh_geometry``, ``broadphase.find_pairs``,
+``narrowphase.collide``, the mode's ``step``, ``Pipeline.sleep`` and the
+checkpoint's save / finite check -- are wrapped with timers for the run, so
+the breakdown follows whatever the pipeline does.  "python/other" is the
+step's wall time not inside any stage (Python glue in ``World.step`` and
+``Pipeline.step``, zeroing force arrays, bookkeeping).
+"""
+from __future__ import annotations
+
+import argparse
+import contextlib
+import time
+
+import numpy as np
+
+STAGES = ("checkpoint", "geometry", "broadphase", "narrowphase", "solver", "sleep/islands", "finite_check")
+
+
+@contextlib.contextmanager
+def _patched(world, acc):
+    from physics import broadphase, narrowphase
+    pipe = world._pipeline
+    mode = world._mode
+    clock = time.perf_counter
+    undo = []
+
+    def wrap(obj, attr, stage):
+        orig = getattr(obj, attr)
+
+        def timed(*a, **k):
+            t = clock()
+            try:
+                return orig(*a, **k)
+            finally:
+                acc[stage] += clock() - t
+        setattr(obj, attr, timed)
+        undo.append((obj, attr, orig, attr in vars(obj)))
+
+    wrap(pipe, "refresh_geometry", "geometry")
+    wrap(broadphase, "find_pairs", "broadphase")
+    wrap(narrowphase, "collide", "narrowphase")
+    wrap(mode, "step", "solver")
+    wrap(pipe, "sleep", "sleep/islands")
+    cp = pipe._checkpoint
+    if hasattr(cp, "save"):
+        wrap(cp, "save", "checkpoint")
+    if hasattr(cp, "nonfinite"):
+        wrap(cp, "nonfinite", "finite_check")
+    try:
+        yield
+    finally:
+        for obj, attr, orig, own in reversed(undo):
+            if own:  # a module function or an instance's own attribute: put it back
+                setattr(obj, attr, orig)
+            else:  # the wrapper shadowed a class method: remove the shadow
+                delattr(obj, attr)
+
+
+def stage_profile(world, steps=200, warm=30):
+    """Mean microseconds per step in each stage of ``world.step()`` (after ``warm`` steps)."""
+    for _ in range(warm):
+        world.step()
+    acc = {s: 0.0 for s in STAGES}
+    with _patched(world, acc):
+        t = time.perf_counter()
+        for _ in range(steps):
+            world.step()
+        total = time.perf_counter() - t
+    out = {s: 1e6 * v / steps for s, v in acc.items()}
+    inside = sum(acc.values())
+    out["python/other"] = 1e6 * max(total - inside, 0.0) / steps
+    out["total"] = 1e6 * total / steps
+    info = world.info()
+    return {"us_per_step": out, "contacts": int(info.get("contacts", 0)), "bodies": int(info.get("bodies", 0)),
+            "pairs": int(getattr(world._pipeline, "npairs", 0)), "stages": info.get("stages", [])}
+
+
+def narrowphase_per_pair(prof):
+    pairs = max(prof["pairs"], 1)
+    return 1e3 * prof["us_per_step"]["narrowphase"] / pairs  # ns per pair
+
+
+def format_profile(name, prof):
+    us = prof["us_per_step"]
+    tot = us["total"]
+    lines = [f"{name}: {tot / 1e3:.3f} ms/step, {prof['bodies']} bodies, {prof['pairs']} broad-phase pairs, "
+             f"{prof['contacts']} manifolds"]
+    for s in (*STAGES, "python/other"):
+        lines.append(f"  {s:<14} {us[s]:9.1f} us  {100 * us[s] / tot:5.1f} %")
+    lines.append(f"  narrow phase per pair: {narrowphase_per_pair(prof):.0f} ns")
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    from . import run
+    ap = argparse.ArgumentParser(prog="python -m bench.profile", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--scene", default="pyramid20", choices=list(run.SCENES))
+    ap.add_argument("--solver", default="soft_step")
+    ap.add_argument("--steps", type=int, default=300)
+    a = ap.parse_args(argv)
+    desc, src = run.scene_desc(a.scene)
+    sim = run.make_ours(a.scene, desc, src, a.solver, {})
+    sim.step()
+    print(format_profile(f"{a.scene} [{a.solver}]", stage_profile(sim.world, a.steps)))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
