@@ -1,0 +1,91 @@
+"""Smoke test of the benchmark suite (``python -m bench``): the smallest configuration runs end to
+end in-process and writes well-formed results.  No timing assertions: only structure, finiteness
+and that the references ran on the identical scene."""
+from __future__ import annotations
+
+import csv
+import json
+import math
+
+import pytest
+
+pytest.importorskip("pymunk")
+pytest.importorskip("Box2D")
+pytest.importorskip("matplotlib")
+
+
+@pytest.fixture(scope="module")
+def results(tmp_path_factory):
+    from bench import run
+    out = tmp_path_factory.mktemp("bench")
+    assert run.main(["--tiny", "--out", str(out), "--modes", "soft_step", "--no-compile"]) == 0
+    return out, json.loads((out / "bench.json").read_text())
+
+
+def _finite(x):
+    return isinstance(x, (int, float)) and math.isfinite(x)
+
+
+def test_files_written(results):
+    out, _ = results
+    for name in ("bench.json", "speed.csv", "scaling.csv", "accuracy.csv", "profile.csv",
+                 "pareto_pyramid20.png", "scaling.png", "accuracy.png", "profile.png"):
+        p = out / name
+        assert p.exists() and p.stat().st_size > 0, name
+    with open(out / "speed.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert {r["engine"] for r in rows} == {"stelkropp", "pymunk", "pybox2d"}
+
+
+def test_speed_rows_and_ratios(results):
+    _, res = results
+    sp = res["speed"]
+    ours = [r for r in sp if r["engine"] == "stelkropp"]
+    assert ours and all(r["status"] == "ok" for r in ours)
+    for r in ours:
+        assert _finite(r["ms_step"]) and r["ms_step"] > 0
+        assert _finite(r["ratio_pymunk"]) and r["ratio_pymunk"] > 0
+        assert _finite(r["ratio_pybox2d"]) and r["ratio_pybox2d"] > 0
+        assert _finite(r["first_step_s"])  # compile/first use reported apart from ms/step
+        assert _finite(r["top_drift"]) and _finite(r["max_penetration"])
+    for e in ("pymunk", "pybox2d"):
+        ref = [r for r in sp if r["engine"] == e]
+        assert len(ref) == 1 and _finite(ref[0]["ms_step"]) and _finite(ref[0]["top_drift"])
+
+
+def test_scaling_accuracy_profile_overhead(results):
+    _, res = results
+    sc = res["scaling"]
+    assert {r["engine"] for r in sc} == {"stelkropp", "pymunk", "pybox2d"}
+    assert all(_finite(r["ms_step"]) for r in sc)
+    acc = res["accuracy"]
+    engines = {r["engine"] for r in acc}
+    assert engines == {"stelkropp", "pymunk", "pybox2d"}
+    metrics = {r["metric"] for r in acc if r["engine"] == "stelkropp"}
+    assert {"spring_period", "spring_energy_drift", "bounce_height", "incline_stick_slip", "incline_slide_accel",
+            "elastic_collision_momentum", "many_body_momentum", "pile_time_to_rest"} <= metrics
+    prof = res["profile"]["pyramid20"]["us_per_step"]
+    assert all(_finite(v) and v >= 0 for v in prof.values())
+    assert _finite(res["overhead"]["empty_world_us"])
+
+
+def test_reference_scenes_match():
+    """The three engines get the same bodies, masses and friction from one description."""
+    from bench import refs
+    d = refs.with_world(refs.pyramid(4), sleeping=False)
+    ours, pm, b2 = (refs.build(e, d) for e in refs.ENGINES)
+    import numpy as np
+    assert np.allclose(ours.state()[0], pm.state()[0]) and np.allclose(ours.state()[0], b2.state()[0], atol=1e-6)
+    masses_pm = [b.mass for b in pm.bodies if b.body_type == b.DYNAMIC]
+    masses_b2 = [b.mass for b in b2.bodies if b.type == 2]
+    assert np.allclose(masses_pm, 1.0) and np.allclose(masses_b2, 1.0, rtol=1e-6)
+    # pymunk multiplies friction: sqrt per shape gives the geometric mean of 0.6 and 0.6
+    s = next(iter(pm.bodies[1].shapes))
+    assert abs(s.friction ** 2 - 0.6) < 1e-12
+
+
+def test_docs_render(results):
+    out, res = results
+    from bench import run
+    text = run.render_docs(res, str(out), out)
+    assert "## Speed" in text and "pareto_pyramid20.png" in text and "python -m bench" in text
