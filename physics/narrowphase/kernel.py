@@ -61,15 +61,19 @@ def _manifold(B, V, a, b, method, margin, sc_a, sc_b, sw, si, lam, poly, out_p, 
     bx, by = B.x[b, 0] - ox, B.x[b, 1] - oy
     if B.shape[a] == CIRCLE and B.shape[b] == CIRCLE:
         return circle_circle(0.0, 0.0, B.radius[a], bx, by, B.radius[b], margin, out_p, out_s, out_f)
-    if B.shape[b] == CIRCLE:
-        va = _relative(V, B, a, ox, oy, sc_a)
-        na = V.wnormal[B.vstart[a]:B.vstart[a] + B.vcount[a]]
-        return polygon_circle(va, na, bx, by, B.radius[b], margin, out_p, out_s, out_f)
+    if B.shape[a] == CIRCLE or B.shape[b] == CIRCLE:
+        # one call site for both orders (compile time); the kernel's normal
+        # goes polygon -> circle, so flip it when the circle is a
+        p, c = (a, b) if B.shape[b] == CIRCLE else (b, a)
+        vp = _relative(V, B, p, ox, oy, sc_a)
+        np_ = V.wnormal[B.vstart[p]:B.vstart[p] + B.vcount[p]]
+        cnt, nx, ny = polygon_circle(vp, np_, B.x[c, 0] - ox, B.x[c, 1] - oy, B.radius[c], margin,
+                                     out_p, out_s, out_f)
+        if c == a:
+            return cnt, -nx, -ny
+        return cnt, nx, ny
     vb = _relative(V, B, b, ox, oy, sc_b)
     nb = V.wnormal[B.vstart[b]:B.vstart[b] + B.vcount[b]]
-    if B.shape[a] == CIRCLE:
-        c, nx, ny = polygon_circle(vb, nb, 0.0, 0.0, B.radius[a], margin, out_p, out_s, out_f)
-        return c, -nx, -ny
     va = _relative(V, B, a, ox, oy, sc_a)
     na = V.wnormal[B.vstart[a]:B.vstart[a] + B.vcount[a]]
     bias = BIAS * min(B.bound_r[a], B.bound_r[b])

@@ -133,8 +133,10 @@ def clip(vr, nr, i, vi, ni, margin, out_p, out_s, out_f, flip):
 @kernel(inline="always")
 def polygon_manifold(va, na, vb, nb, flip, face, margin, out_p, out_s, out_f):
     """Manifold for a chosen reference face; returns (count, nx, ny), n from A to B."""
+    # one clip call site for both roles: it is the biggest inlined kernel
     if flip:
-        c = clip(vb, nb, face, va, na, margin, out_p, out_s, out_f, 1)
-        return c, -nb[face, 0], -nb[face, 1]
-    c = clip(va, na, face, vb, nb, margin, out_p, out_s, out_f, 0)
-    return c, na[face, 0], na[face, 1]
+        vr, nr, vi, ni, sign = vb, nb, va, na, -1.0
+    else:
+        vr, nr, vi, ni, sign = va, na, vb, nb, 1.0
+    c = clip(vr, nr, face, vi, ni, margin, out_p, out_s, out_f, flip)
+    return c, sign * nr[face, 0], sign * nr[face, 1]

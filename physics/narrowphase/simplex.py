@@ -6,6 +6,9 @@ Voronoi-region tests with barycentric coordinates in the form of Ericson,
 sub-simplex whose affine hull holds the closest point (van den Bergen 1999,
 sec. 4: "the support set"), so the next GJK iteration only ever adds to it.
 
+Kept as calls, not inlined (compile time: _triangle has six segment cases)
+and without numba's runtime (no per-array reference counting per call).
+
 Simplex storage (all scratch owned by the caller): ``sw[k]`` = w_k = b - a,
 ``si[k]`` = (vertex index on a, vertex index on b), ``lam[k]`` = barycentric
 weight of w_k in the closest point.
@@ -24,7 +27,7 @@ def _keep(sw, si, lam, dst, src, weight):
     lam[dst] = weight
 
 
-@kernel(inline="always")
+@kernel(_nrt=False)
 def _segment(sw, si, lam, i, j):
     """Closest point on segment w_i w_j; compacts the simplex to slots 0..c-1."""
     ax, ay = sw[i, 0], sw[i, 1]
@@ -44,7 +47,7 @@ def _segment(sw, si, lam, i, j):
     return 2
 
 
-@kernel(inline="always")
+@kernel(_nrt=False)
 def _triangle(sw, si, lam):
     """Closest point on triangle w0 w1 w2 (Ericson 5.1.5 region order)."""
     ax, ay = sw[0, 0], sw[0, 1]
@@ -82,7 +85,7 @@ def _triangle(sw, si, lam):
     return 3
 
 
-@kernel(inline="always")
+@kernel(_nrt=False)
 def reduce_simplex(sw, si, lam, count):
     """Reduce the simplex to its closest feature; returns (count, vx, vy).
 
