@@ -9,7 +9,7 @@ import time
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from physics.contacts import ContactBuffer
@@ -220,7 +220,7 @@ def test_degenerate_configurations_are_finite(method):
         assert np.isfinite(C.point[k, :C.count[k]]).all() and (C.depth[k, :C.count[k]] > 0).all()
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.floats(0.05, 1.0), st.floats(-np.pi, np.pi), st.floats(0.0, 1.6), st.floats(0, 2 * np.pi))
 def test_polygon_circle_rows_either_order(r, q, d, phi):
     """A circle is a or b depending on ids; the row's normal always goes a -> b."""
