@@ -40,6 +40,25 @@ def finite_num(value, field: str, lo=None, hi=None, lo_open=False) -> float:
     return x
 
 
+# densities (kg/m^2) the solvers are known to handle: a 1e-6 feather on a 1e9 anvil is a mass
+# ratio of 1e15, past which no iterative solver transfers a load, and beyond this the inverse
+# masses and impulses start to under- or overflow
+DENSITY_MIN, DENSITY_MAX = 1e-6, 1e9
+
+
+def checked_density(value, shape, field: str = "density") -> float:
+    """A density that gives ``shape`` a finite, positive mass and inertia, or ValueError naming ``field``."""
+    d = finite_num(value, field, lo=0.0, lo_open=True)
+    if not DENSITY_MIN <= d <= DENSITY_MAX:
+        raise ValueError(f"{field}: must be between {DENSITY_MIN:g} and {DENSITY_MAX:g} kg/m^2, got {value!r}")
+    m, _, inertia = shape.mass_properties(d)
+    ok = all(math.isfinite(x) and x > 0.0 and math.isfinite(1.0 / x) for x in (m, inertia))
+    if not ok:
+        raise ValueError(f"{field}: {d:g} kg/m^2 gives this shape mass {m:g} kg and inertia {inertia:g} kg m^2, "
+                         "which the solver cannot represent (choose a density or size nearer 1)")
+    return d
+
+
 def friction_pair(value, field: str = "friction") -> tuple[float, float]:
     """``0.6`` -> (0.6, 0.6); ``(static, dynamic)`` or ``{"static", "dynamic"}`` as given."""
     if isinstance(value, dict):
@@ -160,7 +179,7 @@ class Body:
 
     @density.setter
     def density(self, value):
-        d = finite_num(value, "density", lo=0.0, lo_open=True)
+        d = checked_density(value, self.shape)
         self._world._set_mass(self._s, self.shape, d)
         self._world._touched(self._s)
 
@@ -250,10 +269,16 @@ class Body:
         """Add a force (N) for the next step, at a world point (default: centre of mass)."""
         s = self._s
         f = finite_vec(force, "force")
-        self._B.f[s] += f
+        total = self._B.f[s] + f
+        tau = self._B.tau[s]
         if point is not None:
             r = finite_vec(point, "point") - self._B.x[s]
-            self._B.tau[s] += r[0] * f[1] - r[1] * f[0]
+            tau = tau + (r[0] * f[1] - r[1] * f[0])
+        if not (np.all(np.isfinite(total)) and math.isfinite(tau)):
+            raise ValueError(f"force: the forces accumulated on this body for the next step would overflow "
+                             f"(adding {force!r} to {tuple(self._B.f[s])})")
+        self._B.f[s] = total
+        self._B.tau[s] = tau
         self._world._touched(s)
 
     def apply_impulse(self, impulse, point=None) -> None:
@@ -261,10 +286,15 @@ class Body:
         s = self._s
         j = finite_vec(impulse, "impulse")
         B = self._B
-        B.v[s] += B.inv_m[s] * j
+        v = B.v[s] + B.inv_m[s] * j
+        w = B.w[s]
         if point is not None:
             r = finite_vec(point, "point") - B.x[s]
-            B.w[s] += B.inv_i[s] * (r[0] * j[1] - r[1] * j[0])
+            w = w + B.inv_i[s] * (r[0] * j[1] - r[1] * j[0])
+        if not (np.all(np.isfinite(v)) and math.isfinite(w)):
+            raise ValueError(f"impulse: {impulse!r} would make this body's velocity overflow")
+        B.v[s] = v
+        B.w[s] = w
         self._world._touched(s)
 
     def world_vertices(self) -> np.ndarray:

@@ -86,6 +86,14 @@ class Pipeline:
                 stage = name
                 break
         self._checkpoint.restore(B, n)
+        # the refused step's user forces and contact impulses go with it: kept, the forces (and the
+        # non-finite impulses warm starting would re-apply) would fail every later step too
+        B.f[:n] = 0.0
+        B.tau[:n] = 0.0
+        c = world._contacts
+        for tab in (c.cur, c.prev):
+            tab.jn[:] = 0.0
+            tab.jt[:] = 0.0
         world.wake_all()
         names = [world._handles[int(B.id[s])].name or f"#{int(B.id[s])}" for s in bad]
         err = SimulationError(

@@ -11,7 +11,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import solvers
-from .body import Body, finite_num, finite_vec, friction_pair
+from .body import Body, checked_density, finite_num, finite_vec, friction_pair
 from .contacts import ContactBuffer
 from .errors import SimulationError
 from .pipeline import Pipeline
@@ -173,7 +173,7 @@ class World:
         ang = finite_num(angle, "angle")
         vel = finite_vec(velocity, "velocity")
         avel = finite_num(angular_velocity, "angular_velocity")
-        dens = finite_num(density, "density", lo=0.0, lo_open=True)
+        dens = checked_density(density, shape)  # before the slot is taken: a refused add leaves nothing
         rest = finite_num(restitution, "restitution", lo=0.0, hi=1.0)
         mu_s, mu_d = friction_pair(friction)
         if name is not None:
