@@ -19,7 +19,7 @@ from .impulse import ACTIVE_DEPTH, PROJECTIONS
 from .projection import project
 from .seed_contact import IMPULSE, PENALTY
 from .seed_impulse import activate_impulses, position_share, save_velocities, solve_impulses
-from .seed_mode import (COMMON, IMPULSE_SETTINGS, PENALTY_SETTINGS, SeedMode, auto_speed, penalty_params,
+from .seed_mode import (COMMON, IMPULSE_SETTINGS, PENALTY_SETTINGS, SeedMode, auto_speed, contact_rate, penalty_params,
                         share_factor)
 
 
@@ -66,7 +66,7 @@ class HybridMode(SeedMode):
         c = world._contacts
         g = world._gravity
         pen = penalty_params(p)
-        subs = self.substeps(world, dt, p, pen[1] if c.n else 0.0)
+        subs = self.substeps(world, dt, p, contact_rate(pen) if c.n else 0.0)
         hybrid_step(world._bodies.view, n, world._springs.view, world._springs.n, c.cur, c.n, g[0], g[1], dt,
                     self.work(n), self.method(world), subs, p["iterations"],
                     auto_speed(p["impact_speed"], world, dt), p["energy_correction"], p["stick_speed"],

@@ -15,7 +15,7 @@ from ..integrators import advance, save_start
 from ..settings import declare
 from .contact_prep import prepare_contacts
 from .seed_contact import PENALTY
-from .seed_mode import COMMON, PENALTY_SETTINGS, SeedMode, penalty_params
+from .seed_mode import COMMON, PENALTY_SETTINGS, SeedMode, penalty_params, contact_rate
 
 
 @kernel
@@ -44,7 +44,7 @@ class PenaltyMode(SeedMode):
         c = world._contacts
         g = world._gravity
         pen = penalty_params(p)
-        subs = self.substeps(world, dt, p, pen[1] if c.n else 0.0)
+        subs = self.substeps(world, dt, p, contact_rate(pen) if c.n else 0.0)
         penalty_step(world._bodies.view, n, world._springs.view, world._springs.n, c.cur, c.n, g[0], g[1],
                      dt, self.work(n), self.method(world), subs, p["stick_speed"], pen)
 
