@@ -61,23 +61,56 @@ def _patched(world, acc):
                 delattr(obj, attr)
 
 
-def stage_profile(world, steps=200, warm=30):
-    """Mean microseconds per step in each stage of ``world.step()`` (after ``warm`` steps)."""
+def stage_profile(world, steps=200, warm=30, chunk=20):
+    """Microseconds per step in each stage of ``world.step()`` (after ``warm`` steps): per stage the
+    median over chunks of ``chunk`` steps, so a burst of machine noise in one chunk does not count."""
     for _ in range(warm):
         world.step()
-    acc = {s: 0.0 for s in STAGES}
-    with _patched(world, acc):
-        t = time.perf_counter()
-        for _ in range(steps):
-            world.step()
-        total = time.perf_counter() - t
-    out = {s: 1e6 * v / steps for s, v in acc.items()}
-    inside = sum(acc.values())
-    out["python/other"] = 1e6 * max(total - inside, 0.0) / steps
-    out["total"] = 1e6 * total / steps
+    per_chunk = []
+    for _ in range(max(1, steps // chunk)):
+        acc = {s: 0.0 for s in STAGES}
+        with _patched(world, acc):
+            t = time.perf_counter()
+            for _ in range(chunk):
+                world.step()
+            total = time.perf_counter() - t
+        acc["total"] = total
+        per_chunk.append({k: 1e6 * v / chunk for k, v in acc.items()})
+    out = {k: float(np.median([c[k] for c in per_chunk])) for k in (*STAGES, "total")}
+    out["python/other"] = max(out["total"] - sum(out[s] for s in STAGES), 0.0)
     info = world.info()
     return {"us_per_step": out, "contacts": int(info.get("contacts", 0)), "bodies": int(info.get("bodies", 0)),
             "pairs": int(getattr(world._pipeline, "npairs", 0)), "stages": info.get("stages", [])}
+
+
+def call_overhead(reps=20000):
+    """Cost of calling a compiled kernel from Python with the core's argument types: one array, the
+    bodies table (a namedtuple of arrays) and the contact table.  Numba unboxes every array of a
+    namedtuple on every call, so each table argument costs microseconds before any work is done."""
+    import physics
+    from numba import njit
+
+    @njit
+    def touch(a, n):
+        return n
+
+    w = physics.World()
+    w.add_body(physics.Polygon.box(1, 1))
+    w.step()
+    args = {"one array": w._bodies.view.x, "bodies table": w._bodies.view, "contacts table": w._contacts.cur,
+            "springs table": w._springs.view, "vertex pool": w._verts.view}
+    out = {}
+    for name, a in args.items():
+        touch(a, 1)
+        best = np.inf
+        for _ in range(3):
+            t = time.perf_counter()
+            for _ in range(reps):
+                touch(a, 1)
+            best = min(best, (time.perf_counter() - t) / reps)
+        fields = len(a) if isinstance(a, tuple) else 1
+        out[name] = {"us_per_call": 1e6 * best, "arrays": fields}
+    return out
 
 
 def narrowphase_per_pair(prof):
