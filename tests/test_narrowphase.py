@@ -4,8 +4,6 @@ States are filled by hand (Table + VertexPool + update_geometry) so these
 tests depend only on the store layout, not on the World class.
 """
 import math
-import os
-import time
 
 import numpy as np
 import pytest
@@ -245,9 +243,8 @@ def test_polygon_circle_rows_either_order(r, q, d, phi):
                 assert float(sign * C.normal[0] @ ctr) > -1e-9
 
 
-@pytest.mark.skipif(os.environ.get("NUMBA_DISABLE_JIT") == "1", reason="timing needs the compiled kernels")
-def test_box_box_throughput():
-    """1000 overlapping box pairs; prints pairs/s (a loose bound keeps CI honest)."""
+def test_many_box_pairs_in_one_call():
+    """1000 overlapping box pairs in one call all get a 2-point row (throughput is in bench/collision.py)."""
     s = State()
     rng = np.random.default_rng(1)
     pairs = []
@@ -257,12 +254,7 @@ def test_box_box_throughput():
         b = s.add(Polygon.box(1, 1), (x + rng.uniform(-0.3, 0.3), 0.99), rng.uniform(-0.05, 0.05))
         pairs.append((a, b))
     for method in ("sat", "gjk"):
-        s.collide(pairs, method)                     # compile / warm up
-        reps = 50
-        t0 = time.perf_counter()
-        for _ in range(reps):
-            _, n = s.collide(pairs, method)
-        dt = (time.perf_counter() - t0) / reps
+        C, n = s.collide(pairs, method)
         assert n == 1000
-        print(f"{method}: {1000 / dt:,.0f} box-box pairs/s ({dt / 1000 * 1e9:.0f} ns/pair)")
-        assert dt < 0.05
+        assert np.all(C.count[:n] == 2)
+        assert np.all(C.depth[:n] > 0)
