@@ -257,4 +257,4 @@ def test_many_box_pairs_in_one_call():
         C, n = s.collide(pairs, method)
         assert n == 1000
         assert np.all(C.count[:n] >= 1)
-        assert np.all(C.depth[:n, 0] > 0) or np.all(np.max(C.depth[:n], axis=1) > 0)
+        assert np.all(C.depth[:n, 0] > 0)  # every row has at least one penetrating point
