@@ -10,9 +10,10 @@ Sequential Impulses", GDC 2006).  One step:
    ids in the narrow phase) -- what makes a tall stack converge in 8 sweeps;
 4. ``velocity_iterations`` PGS sweeps: friction clamped to mu * j_n, normal
    impulses clamped >= 0, speculative points may only close their gap;
-5. restitution pass for impacts faster than ``restitution_threshold``
-   (v_n' = -e v_n0, as Box2D v3 does after its solve);
-6. positions += dt * velocities;
+5. positions += dt * velocities;
+6. restitution pass for impacts faster than ``restitution_threshold``
+   (v_n' = -e v_n0, after the move as Box2D v3 does, so a speculative hit
+   bounces at the surface, not a gap before it);
 7. position correction: ``split_impulse`` (pseudo-velocities, ``position_iterations``
    sweeps, no momentum left behind; the default) or ``baumgarte`` (a velocity bias
    in step 4, cheaper, adds some bounce to deep overlaps).
@@ -48,7 +49,7 @@ def _zero_impulses(C, nc):
 
 @kernel
 def si_step(B, n, C, nc, S, ns, gx, gy, dt, vel_iters, pos_iters, warm, beta, slop, correction,
-            rest_threshold, stick_speed, DP, DQ, DC, DS, VP, WP, JP):
+            rest_threshold, stick_speed, block, DP, DQ, DC, DS, VP, WP, JP):
     inv_dt = 1.0 / dt
     prepare_contacts(B, C, nc, stick_speed)
     if not warm:
@@ -59,10 +60,11 @@ def si_step(B, n, C, nc, S, ns, gx, gy, dt, vel_iters, pos_iters, warm, beta, sl
     contact_bias(C, nc, inv_dt, beta, slop, MAX_PUSH, correction == BAUMGARTE)
     warm_start(B, C, nc)
     for _ in range(vel_iters):
-        solve_velocities(B, C, nc)
-    apply_restitution(B, C, nc, rest_threshold)
+        solve_velocities(B, C, nc, block)
     reset_displacements(n, DP, DQ, DC, DS)
     integrate_positions(B, n, dt, DP, DQ, DC, DS)
+    # after the move, so a speculative hit bounces at the wall rather than a gap away from it
+    apply_restitution(B, C, nc, rest_threshold, C.jn)
     if correction == SPLIT and pos_iters > 0:
         reset_pseudo(n, VP, WP)
         zero_rows(JP, nc)
@@ -87,6 +89,7 @@ class SequentialImpulse(SolverMode):
                 choices=tuple(CORRECTIONS)),
         Setting("restitution_threshold", 1.0, 0.0, 100.0, "impacts slower than this (m/s) do not bounce"),
         Setting("stick_speed", 0.01, 0.0, 10.0, "tangential speed (m/s) below which static friction applies"),
+        Setting("block_solver", False, doc="solve the two normal points of a face contact together (Box2D 2.x block solver; off: it converges faster per face but stacks drift more here)"),
     )
 
     def __init__(self):
@@ -112,7 +115,7 @@ class SequentialImpulse(SolverMode):
         si_step(world._bodies.view, n, c.cur, c.n, world._springs.view, world._springs.n,
                 g[0], g[1], dt, p["velocity_iterations"], p["position_iterations"], p["warm_starting"],
                 p["baumgarte"], p["linear_slop"], CORRECTIONS[p["position_correction"]],
-                p["restitution_threshold"], p["stick_speed"],
+                p["restitution_threshold"], p["stick_speed"], p["block_solver"],
                 self.DP, self.DQ, self.DC, self.DS, self.VP, self.WP, self.JP)
 
     def stages(self, world):

@@ -15,6 +15,7 @@ is clamped to the Coulomb box |j_t| <= mu j_n.  The bias encodes:
 from __future__ import annotations
 
 from .._jit import kernel
+from .block_normal import block_normal
 from .contact_prep import apply_impulse, rel_velocity
 
 
@@ -68,13 +69,15 @@ def solve_normal(B, C, k, a, b, nx, ny):
 
 
 @kernel
-def solve_velocities(B, C, nc):
+def solve_velocities(B, C, nc, block):
     """One PGS sweep: friction first, then normal, so the normal rows (which
-    matter most for non-penetration) see the latest velocities (Catto 2006)."""
+    matter most for non-penetration) see the latest velocities (Catto 2006).
+    With ``block`` a two-point manifold's normal rows are solved together."""
     for k in range(nc):
         a = C.a[k]
         b = C.b[k]
         nx = C.normal[k, 0]
         ny = C.normal[k, 1]
         solve_friction(B, C, k, a, b, nx, ny)
-        solve_normal(B, C, k, a, b, nx, ny)
+        if not (block and C.count[k] == 2 and block_normal(B, C, k, a, b, nx, ny, C.bias[k, 0], C.bias[k, 1], 1.0)):
+            solve_normal(B, C, k, a, b, nx, ny)

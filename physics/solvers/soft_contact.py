@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 
 from .._jit import kernel
+from .block_normal import block_normal
 from .contact_prep import apply_impulse, rel_velocity
 
 
@@ -63,8 +64,23 @@ def warm_start(B, C, nc):
 
 
 @kernel
-def solve_contacts(B, C, nc, DP, DC, DS, inv_h, use_bias, soft_dyn, soft_static, push_speed):
-    """One Gauss-Seidel pass: soft normal impulses (>= 0), then Coulomb-clamped friction."""
+def _row_bias(C, k, p, DP, DC, DS, a, b, inv_h, use_bias, rate, mscale, iscale, push_speed):
+    """(bias, mass scale, impulse scale) of one normal row in this pass."""
+    sep = current_separation(C, k, p, DP, DC, DS, a, b)
+    if sep > 0.0:
+        return sep * inv_h, 1.0, 0.0  # speculative: may approach until touching, no further
+    if use_bias:
+        return max(rate * sep, -push_speed), mscale, iscale
+    return 0.0, 1.0, 0.0
+
+
+@kernel
+def solve_contacts(B, C, nc, DP, DC, DS, inv_h, use_bias, soft_dyn, soft_static, push_speed, block):
+    """One Gauss-Seidel pass: soft normal impulses (>= 0), then Coulomb-clamped friction.
+
+    With ``block`` the two normal rows of a face contact are solved together
+    (block_normal.py) when both are in the same regime (both soft or both rigid).
+    """
     for k in range(nc):
         a = C.a[k]
         b = C.b[k]
@@ -72,34 +88,28 @@ def solve_contacts(B, C, nc, DP, DC, DS, inv_h, use_bias, soft_dyn, soft_static,
         ny = C.normal[k, 1]
         rigid_pair = B.inv_m[a] == 0.0 or B.inv_m[b] == 0.0
         rate, mscale, iscale = soft_static if rigid_pair else soft_dyn
-        total_n = 0.0
-        for p in range(C.count[k]):
-            rax = C.ra[k, p, 0]
-            ray = C.ra[k, p, 1]
-            rbx = C.rb[k, p, 0]
-            rby = C.rb[k, p, 1]
-            sep = current_separation(C, k, p, DP, DC, DS, a, b)
-            if sep > 0.0:
-                bias = sep * inv_h  # speculative: may approach until touching, no further
-                ms = 1.0
-                isc = 0.0
-            elif use_bias:
-                bias = max(rate * sep, -push_speed)
-                ms = mscale
-                isc = iscale
-            else:
-                bias = 0.0
-                ms = 1.0
-                isc = 0.0
-            dvx, dvy = rel_velocity(B, a, b, rax, ray, rbx, rby)
-            vn = dvx * nx + dvy * ny
-            old = C.jn[k, p]
-            j = -C.mass_n[k, p] * ms * (vn + bias) - isc * old
-            new = max(old + j, 0.0)
-            C.jn[k, p] = new
-            j = new - old
-            apply_impulse(B, a, b, rax, ray, rbx, rby, j * nx, j * ny)
-            total_n += new
+        done = False
+        if block and C.count[k] == 2:
+            b0, ms0, _ = _row_bias(C, k, 0, DP, DC, DS, a, b, inv_h, use_bias, rate, mscale, iscale, push_speed)
+            b1, ms1, _ = _row_bias(C, k, 1, DP, DC, DS, a, b, inv_h, use_bias, rate, mscale, iscale, push_speed)
+            if ms0 == ms1:
+                done = block_normal(B, C, k, a, b, nx, ny, b0, b1, ms0)
+        if not done:
+            for p in range(C.count[k]):
+                rax = C.ra[k, p, 0]
+                ray = C.ra[k, p, 1]
+                rbx = C.rb[k, p, 0]
+                rby = C.rb[k, p, 1]
+                bias, ms, isc = _row_bias(C, k, p, DP, DC, DS, a, b, inv_h, use_bias, rate, mscale, iscale,
+                                          push_speed)
+                dvx, dvy = rel_velocity(B, a, b, rax, ray, rbx, rby)
+                vn = dvx * nx + dvy * ny
+                old = C.jn[k, p]
+                j = -C.mass_n[k, p] * ms * (vn + bias) - isc * old
+                new = max(old + j, 0.0)
+                C.jn[k, p] = new
+                j = new - old
+                apply_impulse(B, a, b, rax, ray, rbx, rby, j * nx, j * ny)
         for p in range(C.count[k]):
             rax = C.ra[k, p, 0]
             ray = C.ra[k, p, 1]
@@ -116,8 +126,26 @@ def solve_contacts(B, C, nc, DP, DC, DS, inv_h, use_bias, soft_dyn, soft_static,
 
 
 @kernel
-def apply_restitution(B, C, nc, threshold):
-    """Newton's law v_n' = -e v_n (seed eq. 13) for points that hit faster than ``threshold``."""
+def track_max_impulse(C, nc, M, reset):
+    """M[k, p] = the largest normal impulse point (k, p) carried so far this step.
+
+    Restitution must know whether a point took part in the step's collision:
+    by the last sub-step a stopped body's impulse is back to 0 (Box2D v3 keeps
+    ``maxNormalImpulse`` for this).  ``M`` is C.bias, unused by soft_step."""
+    for k in range(nc):
+        for p in range(2):
+            if reset:
+                M[k, p] = 0.0
+            elif C.jn[k, p] > M[k, p]:
+                M[k, p] = C.jn[k, p]
+
+
+@kernel
+def apply_restitution(B, C, nc, threshold, M):
+    """Newton's law v_n' = -e v_n (seed eq. 13) for points that hit faster than ``threshold``.
+
+    Only points that pushed this step (M[k, p] > 0: the accumulated or the
+    largest normal impulse) bounce; a speculative point never reached does not."""
     for k in range(nc):
         e = C.e[k]
         if e == 0.0:
@@ -127,7 +155,7 @@ def apply_restitution(B, C, nc, threshold):
         nx = C.normal[k, 0]
         ny = C.normal[k, 1]
         for p in range(C.count[k]):
-            if C.vn0[k, p] > -threshold or C.jn[k, p] == 0.0:
+            if C.vn0[k, p] > -threshold or M[k, p] == 0.0:
                 continue
             rax = C.ra[k, p, 0]
             ray = C.ra[k, p, 1]

@@ -1,0 +1,119 @@
+"""Stacking quality (issue 5): dt 1/60, gravity -10, friction 0.6, 1x1 boxes, sleeping off.
+
+Reference figures for the top box of the pyramids after 10 s (measured by
+the issue's author): base 20 -- pymunk 0.039 m, pybox2d (Box2D 2.3) 0.26 m,
+Box2D v3.2 0.030 m; base 40 -- pymunk 0.26 m, pybox2d 0.31 m, Box2D v3 0.12 m.
+"""
+import math
+
+import numpy as np
+import pytest
+
+import physics
+
+DT = 1 / 60
+G = (0.0, -10.0)
+
+
+def pyramid(base, solver="soft_step", settings=None):
+    """The standard pyramid: row i has base - i boxes, centred, at y = 0.5 + i."""
+    w = physics.World(gravity=G, dt=DT, solver=solver, sleeping=False, settings=settings)
+    w.add_body(physics.Polygon.box(2 * base + 20, 1), kind="static", position=(0, -0.5), friction=0.6)
+    top = None
+    for i in range(base):
+        for j in range(base - i):
+            top = w.add_body(physics.Polygon.box(1, 1), position=(j - (base - i - 1) / 2.0, 0.5 + i), friction=0.6)
+    return w, top
+
+
+def top_drift(base, solver, seconds=10.0):
+    w, top = pyramid(base, solver)
+    p0 = np.array(top.position)
+    for _ in range(int(round(seconds / DT))):
+        w.step()
+    x = w._bodies.view.x[: w._bodies.n]
+    assert np.all(np.isfinite(x))
+    return float(np.hypot(*(np.array(top.position) - p0)))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("solver,limit", [("soft_step", 0.05), ("sequential_impulse", 0.1)])
+def test_pyramid_20(solver, limit):
+    d = top_drift(20, solver)
+    print(f"pyramid 20 {solver}: top box moved {d:.4f} m")
+    assert d < limit
+
+
+@pytest.mark.slow
+def test_pyramid_40_soft_step():
+    d = top_drift(40, "soft_step")
+    print(f"pyramid 40 soft_step: top box moved {d:.4f} m")
+    assert d < 0.15
+
+
+def test_heavy_box_on_light_box():
+    w = physics.World(gravity=G, dt=DT, sleeping=False)
+    w.add_body(physics.Polygon.box(20, 1), kind="static", position=(0, -0.5), friction=0.6)
+    light = w.add_body(physics.Polygon.box(1, 1), position=(0, 0.5), density=1.0, friction=0.6)
+    heavy = w.add_body(physics.Polygon.box(1, 1), position=(0, 1.5), density=100.0, friction=0.6)
+    p0 = np.array(heavy.position)
+    for _ in range(300):
+        w.step()
+    assert np.hypot(*(np.array(heavy.position) - p0)) < 0.05
+    assert heavy.position[1] > light.position[1] + 0.9  # still on top
+    assert abs(heavy.angle) < 0.01 and abs(light.angle) < 0.01
+
+
+def rain_world(count=1000, seed=3, solver="soft_step", sleeping=True):
+    """An open container 40 m wide; boxes of mixed sizes rain in, a row every 12 steps."""
+    w = physics.World(gravity=G, dt=DT, solver=solver, sleeping=sleeping)
+    w.add_body(physics.Polygon.box(42, 1), kind="static", position=(0, -0.5), friction=0.6)
+    w.add_body(physics.Polygon.box(1, 30), kind="static", position=(-20.5, 15), friction=0.6)
+    w.add_body(physics.Polygon.box(1, 30), kind="static", position=(20.5, 15), friction=0.6)
+    rng = np.random.default_rng(seed)
+    sizes = rng.uniform(0.4, 1.2, size=(count, 2))
+    jitter = rng.uniform(-0.2, 0.2, size=count)
+    spin = rng.uniform(-1, 1, size=count)
+    return w, sizes, jitter, spin
+
+
+def rain(w, sizes, jitter, spin, per_row=25, every=12, height=34.0):
+    """Generator: steps the world, adding a row of boxes every ``every`` steps until all are in."""
+    added = []
+    k = 0
+    while len(added) < len(sizes):
+        if k % every == 0:
+            for c in range(per_row):
+                i = len(added)
+                if i >= len(sizes):
+                    break
+                x = -18.5 + 37.0 * c / (per_row - 1) + jitter[i]
+                added.append(w.add_body(physics.Polygon.box(*sizes[i]), position=(x, height), angle=spin[i],
+                                        velocity=(0.0, -5.0), friction=0.6))
+        w.step()
+        k += 1
+        yield added
+
+
+@pytest.mark.slow
+def test_rain_1000_boxes_into_container_rests_and_sleeps():
+    w, sizes, jitter, spin = rain_world()
+    for added in rain(w, sizes, jitter, spin):
+        pass
+    boxes = added
+    assert len(boxes) == 1000
+    asleep_at = None
+    for k in range(1800):
+        w.step()
+        if k % 30 == 0 and not any(b.awake for b in boxes):
+            asleep_at = k
+            break
+    n = w._bodies.n
+    x = w._bodies.view.x[:n]
+    assert np.all(np.isfinite(x)) and np.all(np.isfinite(w._bodies.view.v[:n]))
+    xs = np.array([b.center_of_mass for b in boxes])
+    assert np.all(np.abs(xs[:, 0]) < 20.0), "a box escaped through a wall"
+    assert np.all(xs[:, 1] > 0.0), "a box fell through the floor"
+    assert np.all(xs[:, 1] < 30.0), "a box was thrown out of the container"
+    assert asleep_at is not None, f"{sum(b.awake for b in boxes)} boxes still awake after 30 s of settling"
+    assert w.info()["awake"] == 0
