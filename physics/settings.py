@@ -35,6 +35,8 @@ class Setting:
             raise ValueError(f"setting '{self.name}' must be one of {list(self.choices)}, got {value!r}")
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise ValueError(f"setting '{self.name}' must be a number, got {value!r}")
+        if not math.isfinite(value):
+            raise ValueError(f"setting '{self.name}' must be finite, got {value!r}")
         if t is int:
             if float(value) != int(value):
                 raise ValueError(f"setting '{self.name}' must be an integer, got {value!r}")
