@@ -99,9 +99,9 @@ def friction_impulse(B, C, k, p, nx, ny):
     vt = -dvx * ny + dvy * nx
     old = C.jt[k, p]
     want = old - C.mass_t[k, p] * vt  # eq. 27: stop the sliding
-    if C.mu[k, p] != C.mu_d[k] and abs(want) > C.mu_s[k] * C.jn[k, p]:
-        C.mu[k, p] = C.mu_d[k]  # eq. 26: beyond mu_s j_r the point slides
-    lim = C.mu[k, p] * C.jn[k, p]
+    lim = C.mu[k, p] * C.jn[k, p]  # mu_d when the point was sliding already
+    if C.mu[k, p] == C.mu_s[k] and abs(want) > lim:
+        lim = C.mu_d[k] * C.jn[k, p]  # eq. 26: beyond mu_s j_r the point slides
     C.jt[k, p] = min(lim, max(-lim, want))
     dj = C.jt[k, p] - old
     apply_impulse(B, a, b, rax, ray, rbx, rby, -dj * ny, dj * nx)
