@@ -1,0 +1,53 @@
+"""``python -m app [SCENE]`` / ``stelkropp [SCENE]``: the Stelkropp sandbox."""
+from __future__ import annotations
+
+import argparse
+import sys
+
+
+def parse_args(argv=None):
+    ap = argparse.ArgumentParser(prog="stelkropp", description="Stelkropp 2D physics sandbox")
+    ap.add_argument("scene", nargs="?", help="scene file (default: scenes/default.json)")
+    ap.add_argument("--size", default="1280x800", help="window size WxH")
+    ap.add_argument("--position", default=None, help="window position X,Y")
+    ap.add_argument("--paused", action="store_true", help="start paused")
+    ap.add_argument("--frames", type=int, default=None, help="stop after N frames once the scene is ready")
+    ap.add_argument("--screenshot", default=None, help="save a PNG of the last frame (with --frames)")
+    ap.add_argument("--exit", action="store_true", help="exit after --frames (status 3 on any OpenGL error)")
+    ap.add_argument("--benchmark-frames", type=int, default=None,
+                    help="run N frames unthrottled, one physics step each, and print the frame-time split")
+    ap.add_argument("--hide-ui", action="store_true", help="start with the panels hidden (H toggles)")
+    ap.add_argument("--no-stats", action="store_true", help="start with the stats window closed")
+    ap.add_argument("--bodies", type=int, default=None, help="instead of a scene: N dynamic bodies in a box")
+    ap.add_argument("--status", default=None, help="write a JSON status file every few frames (tests)")
+    ap.add_argument("--control", default=None,
+                    help="a file of JSON event lines to dispatch into the window (test driver)")
+    ap.add_argument("--autosave-interval", type=float, default=60.0, help="seconds between autosaves")
+    ap.add_argument("--no-autosave-offer", action="store_true", help="do not offer a crashed session's autosave")
+    return ap.parse_args(argv)
+
+
+def main(argv=None) -> int:
+    args = parse_args(argv)
+    import pyglet
+    pyglet.options["debug_gl"] = False
+    from .window import Sandbox
+    size = tuple(int(v) for v in args.size.lower().split("x"))
+    pos = tuple(int(v) for v in args.position.split(",")) if args.position else None
+    world = None
+    if args.bodies:
+        from .document import bench_world
+        world = bench_world(args.bodies)
+    win = Sandbox(scene=args.scene, world=world, size=size, position=pos, paused=args.paused, status=args.status,
+                  autosave_interval=args.autosave_interval, offer_autosave=not args.no_autosave_offer)
+    win.show_ui = not args.hide_ui
+    if args.control:
+        from pathlib import Path
+        win.control_path = Path(args.control)
+    win.panels.show_stats = not args.no_stats
+    return win.run(frames=args.frames, screenshot=args.screenshot, exit_after=args.exit,
+                   benchmark=args.benchmark_frames)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,271 @@
+"""Undo/redo: every edit and creation in the sandbox is a command.
+
+Commands refer to bodies and springs through :class:`Ref` holders, so a body
+that is deleted and brought back by undo (as a new handle) is still the body
+that later commands in the history talk about.
+"""
+from __future__ import annotations
+
+import time
+
+import physics
+
+
+class Ref:
+    """A stable reference to a body or spring across delete/undo cycles."""
+    __slots__ = ("obj",)
+
+    def __init__(self, obj):
+        self.obj = obj
+
+
+class Refs:
+    """Handle id -> Ref, kept per world."""
+
+    def __init__(self):
+        self._bodies: dict[int, Ref] = {}
+        self._springs: dict[int, Ref] = {}
+
+    def of(self, item) -> Ref:
+        table = self._springs if isinstance(item, physics.Spring) else self._bodies
+        r = table.get(item.id)
+        if r is None:
+            r = table[item.id] = Ref(item)
+        return r
+
+    def rebind(self, ref: Ref, item) -> None:
+        table = self._springs if isinstance(item, physics.Spring) else self._bodies
+        ref.obj = item
+        table[item.id] = ref
+
+
+BODY_FIELDS = ("kind", "position", "angle", "velocity", "angular_velocity", "density", "restitution",
+               "friction", "name")
+SPRING_FIELDS = ("anchor_a", "anchor_b", "stiffness", "damping", "rest_length", "name")
+
+
+def body_spec(b) -> dict:
+    return {"shape": b.shape, **{f: getattr(b, f) for f in BODY_FIELDS}}
+
+
+def spring_spec(sp, refs: Refs) -> dict:
+    return {"a": refs.of(sp.body_a), "b": None if sp.body_b is None else refs.of(sp.body_b),
+            **{f: getattr(sp, f) for f in SPRING_FIELDS}}
+
+
+def make_body(world, spec: dict):
+    return world.add_body(spec["shape"], **{f: spec[f] for f in BODY_FIELDS})
+
+
+def make_spring(world, spec: dict):
+    return world.add_spring(spec["a"].obj, None if spec["b"] is None else spec["b"].obj,
+                            anchor_a=spec["anchor_a"], anchor_b=spec["anchor_b"], stiffness=spec["stiffness"],
+                            damping=spec["damping"], rest_length=spec["rest_length"], name=spec["name"])
+
+
+class Command:
+    label = ""
+
+    def do(self, app) -> None:
+        raise NotImplementedError
+
+    def undo(self, app) -> None:
+        raise NotImplementedError
+
+    def merge(self, other) -> bool:
+        return False
+
+
+class AddBody(Command):
+    def __init__(self, spec: dict, label="create body"):
+        self.spec = spec
+        self.ref: Ref | None = None
+        self.label = label
+
+    def do(self, app):
+        b = make_body(app.world, self.spec)
+        if self.ref is None:
+            self.ref = app.refs.of(b)
+        else:
+            app.refs.rebind(self.ref, b)
+
+    def undo(self, app):
+        b = self.ref.obj
+        self.spec = body_spec(b)
+        app.deselect(b)
+        app.world.remove(b)
+
+
+class RemoveBodies(Command):
+    """Delete bodies and the springs attached to them."""
+
+    def __init__(self, app, bodies):
+        self.refs = [app.refs.of(b) for b in bodies]
+        self.label = f"delete {len(self.refs)} bodies" if len(self.refs) != 1 else "delete body"
+        self.specs = []
+        self.springs = []
+
+    def do(self, app):
+        objs = {r.obj for r in self.refs}
+        self.specs = [body_spec(r.obj) for r in self.refs]
+        self.springs = [(app.refs.of(sp), spring_spec(sp, app.refs)) for sp in app.world.springs
+                        if (sp.body_a in objs or sp.body_b in objs) and not app.is_tool_spring(sp)]
+        for r in self.refs:
+            app.deselect(r.obj)
+            app.world.remove(r.obj)
+
+    def undo(self, app):
+        for r, spec in zip(self.refs, self.specs):
+            app.refs.rebind(r, make_body(app.world, spec))
+        for r, spec in self.springs:
+            app.refs.rebind(r, make_spring(app.world, spec))
+
+
+class AddSpring(Command):
+    label = "create spring"
+
+    def __init__(self, spec: dict):
+        self.spec = spec
+        self.ref: Ref | None = None
+
+    def do(self, app):
+        sp = make_spring(app.world, self.spec)
+        if self.ref is None:
+            self.ref = app.refs.of(sp)
+        else:
+            app.refs.rebind(self.ref, sp)
+
+    def undo(self, app):
+        sp = self.ref.obj
+        self.spec = spring_spec(sp, app.refs)
+        app.deselect(sp)
+        app.world.remove(sp)
+
+
+class RemoveSpring(Command):
+    label = "delete spring"
+
+    def __init__(self, app, sp):
+        self.ref = app.refs.of(sp)
+        self.spec = None
+
+    def do(self, app):
+        self.spec = spring_spec(self.ref.obj, app.refs)
+        app.deselect(self.ref.obj)
+        app.world.remove(self.ref.obj)
+
+    def undo(self, app):
+        app.refs.rebind(self.ref, make_spring(app.world, self.spec))
+
+
+class SetProperty(Command):
+    """``item.field = value`` (a body or spring).  Consecutive edits of one field merge."""
+
+    def __init__(self, app, item, field: str, value, old=None):
+        self.ref = app.refs.of(item)
+        self.field = field
+        self.new = value
+        self.old = getattr(item, field) if old is None else old
+        self.t = time.monotonic()
+        self.label = f"set {field}"
+
+    def do(self, app):
+        setattr(self.ref.obj, self.field, self.new)   # ValueError propagates: nothing changed
+
+    def undo(self, app):
+        setattr(self.ref.obj, self.field, self.old)
+
+    def merge(self, other) -> bool:
+        if (isinstance(other, SetProperty) and other.ref is self.ref and other.field == self.field
+                and other.t - self.t < 1.5):
+            self.new = other.new
+            self.t = other.t
+            return True
+        return False
+
+
+class SetWorld(Command):
+    """A world-level setting: solver, integrator, gravity, a solver setting ..."""
+
+    def __init__(self, getter, setter, value, label):
+        self.getter, self.setter = getter, setter
+        self.new = value
+        self.old = getter()
+        self.label = label
+        self.t = time.monotonic()
+
+    def do(self, app):
+        self.setter(self.new)
+
+    def undo(self, app):
+        self.setter(self.old)
+
+    def merge(self, other) -> bool:
+        if isinstance(other, SetWorld) and other.label == self.label and other.t - self.t < 1.5:
+            self.new = other.new
+            self.t = other.t
+            return True
+        return False
+
+
+class Group(Command):
+    def __init__(self, commands, label):
+        self.commands = list(commands)
+        self.label = label
+
+    def do(self, app):
+        done = []
+        try:
+            for c in self.commands:
+                c.do(app)
+                done.append(c)
+        except Exception:
+            for c in reversed(done):
+                c.undo(app)
+            raise
+
+    def undo(self, app):
+        for c in reversed(self.commands):
+            c.undo(app)
+
+
+class History:
+    def __init__(self, limit: int = 500):
+        self.done: list[Command] = []
+        self.undone: list[Command] = []
+        self.limit = limit
+        self.version = 0   # bumps on every change; the document is clean at `saved_version`
+
+    def execute(self, app, cmd: Command) -> None:
+        """Run a command and record it; a ValueError from the core leaves nothing recorded."""
+        cmd.do(app)
+        self.undone.clear()
+        if self.done and self.done[-1].merge(cmd):
+            pass
+        else:
+            self.done.append(cmd)
+            if len(self.done) > self.limit:
+                self.done.pop(0)
+        self.version += 1
+
+    def undo(self, app) -> str | None:
+        if not self.done:
+            return None
+        cmd = self.done.pop()
+        cmd.undo(app)
+        self.undone.append(cmd)
+        self.version += 1
+        return cmd.label
+
+    def redo(self, app) -> str | None:
+        if not self.undone:
+            return None
+        cmd = self.undone.pop()
+        cmd.do(app)
+        self.done.append(cmd)
+        self.version += 1
+        return cmd.label
+
+    def clear(self):
+        self.done.clear()
+        self.undone.clear()
