@@ -24,26 +24,62 @@ def centres(w):
     return w._bodies.view.x[: w._bodies.n].copy()
 
 
+STACKING_MODES = ("soft_step", "sequential_impulse")
+
+
 @pytest.mark.slow
-def test_cycle_modes_every_second_during_pyramid():
+def test_cycle_all_modes_every_second_during_pyramid():
+    """Every mode in turn, one second each: never non-finite, and no switch kicks a box.
+
+    The seed modes (impulse, penalty, hybrid) reproduce the report and cannot hold a
+    210-box pyramid by themselves (it slumps within 2 s in each), so the jump measured
+    here is the one a *switch* makes: how much a box's per-step displacement changes
+    across the switch (0.1 m per step = a 6 m/s kick).  It is asserted for switches out of
+    a stacking mode (the pyramid still intact); after a seed mode has let the pyramid
+    slump, boxes are already falling and colliding fast (hybrid alone moves boxes
+    0.45 m/step within 2 s), so those kicks are only printed, and must stay finite."""
     modes = physics.solvers_available()
-    assert {"soft_step", "sequential_impulse"} <= set(modes)
+    assert set(STACKING_MODES) <= set(modes)
     w = pyramid(20)
+    before = centres(w)
+    w.step()
     prev = centres(w)
-    worst = 0.0
     seconds = max(10, 2 * len(modes))
+    last = None
     for sec in range(seconds):
+        last = w.solver if sec else None
         w.solver = modes[sec % len(modes)]
+        for k in range(60):
+            w.step()
+            x = centres(w)
+            assert np.all(np.isfinite(x)) and np.all(np.isfinite(w._bodies.view.v[: w._bodies.n])), \
+                f"non-finite state in mode {w.solver}"
+            if k == 0:
+                kick = float(np.max(np.hypot(*((x - prev) - (prev - before)).T)))
+                print(f"switch to {w.solver} at t={w.time:.2f}: kick {kick:.3f} m/step")
+                if last in STACKING_MODES:
+                    assert kick < 0.1, f"switching {last} -> {w.solver} at t={w.time:.2f} kicked a box by {kick:.3f} m/step"
+            before, prev = prev, x
+
+
+@pytest.mark.slow
+def test_cycle_stacking_modes_every_second_keeps_pyramid():
+    """soft_step <-> sequential_impulse every second for 10 s: no box moves 0.1 m in a step,
+    and the pyramid stands (top box within 0.1 m)."""
+    w = pyramid(20)
+    top = w.bodies[-1]
+    p0 = np.array(top.position)
+    prev = centres(w)
+    for sec in range(10):
+        w.solver = STACKING_MODES[sec % 2]
         for _ in range(60):
             w.step()
             x = centres(w)
             assert np.all(np.isfinite(x)), f"non-finite state in mode {w.solver}"
             jump = float(np.max(np.hypot(*(x - prev).T)))
-            worst = max(worst, jump)
             assert jump < 0.1, f"a box jumped {jump:.3f} m in one step in mode {w.solver} at t={w.time:.2f}"
             prev = x
-    v = w._bodies.view.v[: w._bodies.n]
-    assert np.all(np.isfinite(v))
+    assert np.hypot(*(np.array(top.position) - p0)) < 0.1
 
 
 def test_switch_keeps_warm_start_and_settings():

@@ -30,6 +30,7 @@ from .motion import integrate_positions, integrate_velocities, reset_displacemen
 from .si_contact import contact_bias, solve_velocities
 from .soft_contact import apply_restitution, warm_start
 from .soft_springs import solve_springs
+from .warm_handoff import adopt
 from .split_impulse import integrate_pseudo, reset_pseudo, solve_split, zero_rows
 
 BAUMGARTE, SPLIT = 0, 1
@@ -111,6 +112,7 @@ class SequentialImpulse(SolverMode):
         c = world._contacts
         if c.n > len(self.JP):
             self.JP = np.zeros((2 * c.n, 2))
+        adopt(world, dt)
         g = world._gravity
         si_step(world._bodies.view, n, c.cur, c.n, world._springs.view, world._springs.n,
                 g[0], g[1], dt, p["velocity_iterations"], p["position_iterations"], p["warm_starting"],

@@ -18,6 +18,7 @@ from .contact_prep import prepare_contacts
 from .motion import integrate_positions, integrate_velocities, reset_displacements
 from .soft_contact import apply_restitution, softness, solve_contacts, track_max_impulse, warm_start
 from .soft_springs import solve_springs
+from .warm_handoff import adopt
 
 
 @kernel
@@ -89,6 +90,7 @@ class SoftStep(SolverMode):
         if n > len(self.DQ):
             self._alloc(2 * n)
         c = world._contacts
+        adopt(world, dt / p["substeps"])  # impulses per sub-step; rescaled after a mode switch
         g = world._gravity
         soft_step(world._bodies.view, n, c.cur, c.n, world._springs.view, world._springs.n,
                   g[0], g[1], dt, p["substeps"], p["iterations"], p["contact_hertz"], p["damping_ratio"],
