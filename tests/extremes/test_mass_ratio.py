@@ -9,11 +9,12 @@ def test_heavy_on_light_soft_step_holds_the_load():
     """Regime: a 1000 kg box (1 x 1 m) resting on a 1 kg box on static ground, default soft_step.
 
     Outcome: finite, the heavy box stays above the light one, the pair comes to rest (< 0.05 m/s)
-    and the combined sink over the last second is below 15 cm (soft contacts are mass-normalised:
-    the ground contact of a 1 kg body carries 9.8 kN, measured 9 cm)."""
+    and the combined sink over the last second is below 25 cm, a quarter of the light box (soft
+    contacts are mass-normalised: the ground contact of a 1 kg body carries 9.8 kN; measured 9 to
+    14 cm while the soft_step defaults were being tuned)."""
     m = mass_ratio_stack("soft_step").metrics
     assert m["finite"] and m["order_kept"]
-    assert m["sink"] < 0.15
+    assert m["sink"] < 0.25
     assert m["speed"] < 0.05
 
 
