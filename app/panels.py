@@ -71,6 +71,7 @@ class Panels:
         if self.show_stats:
             self.stats_window()
         self.messages()
+        self.scene_error_window()
         self.modals()
         self.palette_drop()
         self.over_ui = imgui.is_window_hovered(imgui.HoveredFlags_.any_window.value) or io.want_capture_mouse
@@ -495,7 +496,8 @@ class Panels:
                               implot.AxisFlags_.auto_fit.value)
             implot.setup_axis_limits(implot.ImAxis_.x1.value, float(t[0]), 0.0, implot.Cond_.always.value)
             if len(series) > 1:
-                implot.setup_legend(implot.Location_.north_west.value, implot.LegendFlags_.horizontal.value)
+                implot.setup_legend(implot.Location_.north.value,
+                                    (implot.LegendFlags_.horizontal | implot.LegendFlags_.outside).value)
             # at most ~120 points per line: llvmpipe pays for every plotted segment
             k = max(1, len(t) // 120)
             for label, y in series:
@@ -521,6 +523,32 @@ class Panels:
         imgui.begin("##messages", None, flags)
         for text, error, _ in msgs[-5:]:
             imgui.text_colored(RED if error else GREEN, text)
+        imgui.end()
+
+    def scene_error_window(self):
+        """A load that failed: its problems, until dismissed (the current scene stays)."""
+        app = self.app
+        if not app.scene_errors:
+            return
+        io = imgui.get_io()
+        imgui.set_next_window_pos(imgui.ImVec2(io.display_size.x * 0.5 + 0.5 * (PANEL_W - STATS_W),
+                                               io.display_size.y - 48),
+                                  imgui.Cond_.appearing.value, imgui.ImVec2(0.5, 1.0))
+        imgui.set_next_window_size_constraints(imgui.ImVec2(300, 0), imgui.ImVec2(560, 400))
+        flags = (imgui.WindowFlags_.always_auto_resize | imgui.WindowFlags_.no_saved_settings |
+                 imgui.WindowFlags_.no_collapse).value
+        imgui.begin("Scene not loaded###sceneerr", None, flags)
+        imgui.push_text_wrap_pos(540)
+        imgui.text_colored(RED, "Could not load the scene; the current one stays.")
+        for line in app.scene_errors[:20]:
+            imgui.bullet_text(line)
+        if len(app.scene_errors) > 20:
+            imgui.text_colored(DIM, f"... and {len(app.scene_errors) - 20} more")
+        imgui.pop_text_wrap_pos()
+        if imgui.button("Dismiss"):
+            app.scene_errors = []
+        a, b = imgui.get_window_pos(), imgui.get_window_size()
+        app.ui_rects["scene_errors"] = (a.x, a.y, a.x + b.x, a.y + b.y)
         imgui.end()
 
     def confirm(self, message, on_discard, on_save=None):

@@ -1,0 +1,28 @@
+"""Pixel checks for sandbox screenshots (colours from app/renderer.py)."""
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+# colours (see app/renderer.py): dynamic fills are blue, static grey-blue, selection orange
+def body_pixels(img: np.ndarray, x0=360, x1=940) -> int:
+    """How many pixels in the scene area (between the panels) look like a drawn body."""
+    area = img[:, x0:x1]
+    r, g, b = area[..., 0], area[..., 1], area[..., 2]
+    blue = (b > 150) & (b > r + 40) & (g > 90)           # dynamic fill / outline
+    grey = (abs(r - 74) < 14) & (abs(g - 83) < 14) & (abs(b - 97) < 14)   # static fill
+    return int(np.count_nonzero(blue | grey))
+
+
+def orange_pixels(img, x0, y0, x1, y1) -> int:
+    a = img[max(0, y0):y1, max(0, x0):x1]
+    r, g, b = a[..., 0], a[..., 1], a[..., 2]
+    return int(np.count_nonzero((r > 170) & (g > 90) & (g < 200) & (b < 140)))
+
+
+def red_text_pixels(img, x0, y0, x1, y1) -> int:
+    a = img[y0:y1, x0:x1]
+    r, g, b = a[..., 0], a[..., 1], a[..., 2]
+    return int(np.count_nonzero((r > 200) & (g < 150) & (b < 150)))
