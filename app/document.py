@@ -89,8 +89,10 @@ def scene_files() -> list[Path]:
 
 def format_scene_error(exc) -> list[str]:
     """A SceneError (or any load failure) as lines for the scene panel."""
-    lines = [str(exc)]
-    for p in getattr(exc, "problems", []) or []:
+    problems = getattr(exc, "problems", []) or []
+    text = str(exc)
+    lines = [text.splitlines()[0] if problems and text else text]
+    for p in problems:
         if isinstance(p, (tuple, list)) and len(p) == 2:
             lines.append(f"{p[0]}: {p[1]}")
         else:

@@ -496,8 +496,7 @@ class Panels:
                               implot.AxisFlags_.auto_fit.value)
             implot.setup_axis_limits(implot.ImAxis_.x1.value, float(t[0]), 0.0, implot.Cond_.always.value)
             if len(series) > 1:
-                implot.setup_legend(implot.Location_.north.value,
-                                    (implot.LegendFlags_.horizontal | implot.LegendFlags_.outside).value)
+                implot.setup_legend(implot.Location_.north_east.value, implot.LegendFlags_.horizontal.value)
             # at most ~120 points per line: llvmpipe pays for every plotted segment
             k = max(1, len(t) // 120)
             for label, y in series:
@@ -538,7 +537,7 @@ class Panels:
         flags = (imgui.WindowFlags_.always_auto_resize | imgui.WindowFlags_.no_saved_settings |
                  imgui.WindowFlags_.no_collapse).value
         imgui.begin("Scene not loaded###sceneerr", None, flags)
-        imgui.push_text_wrap_pos(540)
+        imgui.push_text_wrap_pos(imgui.get_cursor_pos_x() + 520)
         imgui.text_colored(RED, "Could not load the scene; the current one stays.")
         for line in app.scene_errors[:20]:
             imgui.bullet_text(line)

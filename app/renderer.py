@@ -348,7 +348,8 @@ class Renderer:
         ln = np.hypot(d[:, 0], d[:, 1])
         ln1 = np.where(ln == 0, 1.0, ln)
         nrm = np.stack([-d[:, 1], d[:, 0]], 1) / ln1[:, None]
-        amp = np.clip(0.08 * np.maximum(ln, 0.5), 6.0 / scale, 0.25)  # world metres
+        amp = np.clip(0.08 * np.maximum(ln, 0.5), 4.0 / scale, 0.25)  # world metres
+        amp = np.where(ln * scale < 50.0, 0.0, amp)   # short on screen: a plain line reads better
         pts = a[:, None, :] + t[None, :, None] * d[:, None, :] + (off[None, :, None] * amp[:, None, None]) * nrm[:, None, :]
         p0 = pts[:, :-1].reshape(-1, 2)
         p1 = pts[:, 1:].reshape(-1, 2)
