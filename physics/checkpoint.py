@@ -56,14 +56,20 @@ class Checkpoint:
         self.V = np.zeros((cap, 2))
         self.W = np.zeros(cap)
 
-    def save(self, B, n):
+    def ensure(self, n):
         if n > len(self.Q):
             self._alloc(max(n, 2 * len(self.Q)))
+
+    def save(self, B, n):
+        self.ensure(n)
         save_state(B, n, self.X, self.Q, self.V, self.W)
 
     def restore(self, B, n):
         restore_state(B, n, self.X, self.Q, self.V, self.W)
 
     def nonfinite(self, B, n) -> list[int]:
-        k = count_nonfinite(B, n, self.bad)
-        return [int(s) for s in self.bad[: min(k, len(self.bad))]] if k else []
+        return self.slots(count_nonfinite(B, n, self.bad))
+
+    def slots(self, k: int) -> list[int]:
+        """The first non-finite slots found by a count of ``k``."""
+        return [int(s) for s in self.bad[: min(k, len(self.bad))]]

@@ -14,6 +14,7 @@ from .checkpoint import Checkpoint
 from .errors import SimulationError
 from .geometry import update_geometry
 from .islands import Islands
+from .step_frame import begin_step, end_step
 from .store import DYNAMIC, KIND_NAMES
 
 
@@ -34,11 +35,12 @@ class Pipeline:
     def refresh_geometry(self, world, dt: float = 0.0) -> None:
         update_geometry(world._bodies.view, world._verts.view, world._bodies.n, dt, world.speculative_distance)
 
-    def collide(self, world, dt: float) -> None:
+    def collide(self, world, dt: float, geometry: bool = True) -> None:
         from . import broadphase, narrowphase
         B = world._bodies.view
         n = world._bodies.n
-        self.refresh_geometry(world, dt)
+        if geometry:
+            self.refresh_geometry(world, dt)
         self.npairs, self._pairs = broadphase.find_pairs(B, n, world.broadphase, self._pairs)
         narrowphase.collide(B, world._verts.view, self._pairs, self.npairs, world._contacts,
                             world.narrowphase, dt, world.speculative_distance)
@@ -62,14 +64,15 @@ class Pipeline:
             world.steps += 1
             return
         B = world._bodies.view
-        self._checkpoint.save(B, n)
-        for name in self.STAGES:
-            getattr(self, name)(world, dt)
-        bad = self._checkpoint.nonfinite(B, n)
-        if bad:
-            self._fail(world, dt, bad)
-        B.f[:n] = 0.0
-        B.tau[:n] = 0.0
+        ck = self._checkpoint
+        ck.ensure(n)
+        begin_step(B, world._verts.view, n, dt, world.speculative_distance, ck.X, ck.Q, ck.V, ck.W)
+        self.collide(world, dt, geometry=False)
+        self.solve(world, dt)
+        self.sleep(world, dt)
+        k = end_step(B, n, ck.bad)
+        if k:
+            self._fail(world, dt, ck.slots(k))
         world.time += dt
         world.steps += 1
         world.fault = None
