@@ -56,10 +56,15 @@ def _moving(B, i):
 
 @kernel
 def _wake_touched(B, n, C, nc, S, ns, slop):
-    """Wake sleeping islands touched by awake dynamic or moving kinematic bodies."""
+    """Wake sleeping islands touched by awake dynamic or moving kinematic bodies.
+
+    A row counts if it touches or if it pushed this step: a speculative row
+    (still apart at the step's start) whose impulse stopped an approaching body
+    has also given the sleeper a velocity, which must not be kept asleep."""
     for k in range(nc):
         touching = C.depth[k, 0] > -slop or (C.count[k] > 1 and C.depth[k, 1] > -slop)
-        if not touching:
+        pushed = C.jn[k, 0] > 0.0 or (C.count[k] > 1 and C.jn[k, 1] > 0.0)
+        if not (touching or pushed):
             continue
         a = C.a[k]
         b = C.b[k]
@@ -78,6 +83,11 @@ def _wake_touched(B, n, C, nc, S, ns, slop):
             _wake_island(B, n, a)
         elif B.awake[b] == 0 and B.awake[a] == 1 and B.kind[b] == DYNAMIC:
             _wake_island(B, n, b)
+    # a sleeper is put to sleep at rest; any velocity now came from an impulse this step
+    # (e.g. a speculative row whose final impulse the relax pass brought back to 0)
+    for i in range(n):
+        if B.kind[i] == DYNAMIC and B.awake[i] == 0 and _moving(B, i):
+            _wake_island(B, n, i)
 
 
 @kernel

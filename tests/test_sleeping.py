@@ -138,3 +138,19 @@ def test_everything_asleep_costs_nothing():
         w.step()
     assert w.steps == steps + 100
     assert np.array_equal(x, w._bodies.view.x[: w._bodies.n])
+
+
+@pytest.mark.parametrize("solver", SOLVERS)
+def test_sleeping_body_never_keeps_velocity(solver):
+    """A body pushed by a speculative contact (the hitter closes the gap during the step) wakes
+    at once; it never sits asleep with the velocity the impulse gave it."""
+    w = ground_world(solver)
+    target = w.add_body(physics.Polygon.box(1, 1), position=(0, 0.5))
+    run_until_asleep(w, [target])
+    hitter = w.add_body(physics.Polygon.box(1, 1), position=(-1.3, 0.5), velocity=(30.0, 0.0))
+    for _ in range(30):
+        w.step()
+        if not target.awake:
+            assert target.velocity == (0.0, 0.0) and target.angular_velocity == 0.0
+    assert target.position[0] > 0.2, "the hit moved the sleeping box"
+    assert hitter.position[0] < target.position[0]
