@@ -30,6 +30,9 @@ def apply_style():
     st.grab_rounding = 4.0
     st.popup_rounding = 4.0
     st.window_border_size = 0.0
+    # fewer, simpler triangles: llvmpipe pays per triangle far more than per pixel
+    st.anti_aliased_lines = False
+    st.anti_aliased_fill = False
     st.frame_padding = imgui.ImVec2(6, 3)
     st.item_spacing = imgui.ImVec2(6, 4)
     colors = {
