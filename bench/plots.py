@@ -75,7 +75,7 @@ def pareto_plot(res, scene, path):
     err = meta.get("error", "error")
     ax.set_ylabel({"top_drift": "top-box drift (m)", "max_penetration": "max penetration (m)"}.get(err, err)
                   + f" after {meta.get('steps', '?')} steps (lower is better)")
-    ax.set_title(f"{meta.get('title', scene)}: speed vs error (diamond: default settings, x: failed/cut)")
+    ax.set_title(f"{meta.get('title', scene)}\nspeed vs error (diamond: default settings, x: failed or cut short)", fontsize=10)
     ax.grid(True, which="both", alpha=0.25)
     ax.legend(fontsize=8, loc="best")
     fig.tight_layout()
