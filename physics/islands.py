@@ -56,15 +56,10 @@ def _moving(B, i):
 
 @kernel
 def _wake_touched(B, n, C, nc, S, ns, slop):
-    """Wake sleeping islands touched by awake dynamic or moving kinematic bodies.
-
-    A row counts if it touches or if it pushed this step: a speculative row
-    (still apart at the step's start) whose impulse stopped an approaching body
-    has also given the sleeper a velocity, which must not be kept asleep."""
+    """Wake sleeping islands touched by awake dynamic or moving kinematic bodies."""
     for k in range(nc):
         touching = C.depth[k, 0] > -slop or (C.count[k] > 1 and C.depth[k, 1] > -slop)
-        pushed = C.jn[k, 0] > 0.0 or (C.count[k] > 1 and C.jn[k, 1] > 0.0)
-        if not (touching or pushed):
+        if not touching:
             continue
         a = C.a[k]
         b = C.b[k]
@@ -83,11 +78,24 @@ def _wake_touched(B, n, C, nc, S, ns, slop):
             _wake_island(B, n, a)
         elif B.awake[b] == 0 and B.awake[a] == 1 and B.kind[b] == DYNAMIC:
             _wake_island(B, n, b)
-    # a sleeper is put to sleep at rest; any velocity now came from an impulse this step
-    # (e.g. a speculative row whose final impulse the relax pass brought back to 0)
+
+
+@kernel
+def _wake_pushed(B, n, lin_tol, ang_tol):
+    """Sleepers are put to sleep at rest, so a velocity now came from an impulse this step
+    (e.g. a speculative row, not yet touching, that stopped a body thrown at the sleeper).
+    Above the sleep thresholds it wakes the island; below, it is a nudge and is dropped
+    (waking on every nudge would keep a settling pile from ever sleeping island by island)."""
     for i in range(n):
-        if B.kind[i] == DYNAMIC and B.awake[i] == 0 and _moving(B, i):
+        if B.kind[i] != DYNAMIC or B.awake[i] == 1 or not _moving(B, i):
+            continue
+        v2 = B.v[i, 0] * B.v[i, 0] + B.v[i, 1] * B.v[i, 1]
+        if v2 > lin_tol * lin_tol or abs(B.w[i]) > ang_tol:
             _wake_island(B, n, i)
+        else:
+            B.v[i, 0] = 0.0
+            B.v[i, 1] = 0.0
+            B.w[i] = 0.0
 
 
 @kernel
@@ -98,6 +106,7 @@ def update_islands(B, n, C, nc, S, ns, dt, slop, lin_tol, ang_tol, time_to_sleep
     a 1-element counter for fresh island labels.
     """
     _wake_touched(B, n, C, nc, S, ns, slop)
+    _wake_pushed(B, n, lin_tol, ang_tol)
     for i in range(n):
         parent[i] = i
         if B.kind[i] == DYNAMIC and B.awake[i] == 1:
