@@ -15,7 +15,7 @@ from .errors import SimulationError
 from .geometry import update_geometry
 from .islands import Islands
 from .step_frame import begin_step, end_step
-from .store import DYNAMIC, KIND_NAMES
+from .store import DYNAMIC, KIND_NAMES, STATIC
 
 
 class Pipeline:
@@ -67,9 +67,19 @@ class Pipeline:
         ck = self._checkpoint
         ck.ensure(n)
         begin_step(B, world._verts.view, n, dt, world.speculative_distance, ck.X, ck.Q, ck.V, ck.W)
-        self.collide(world, dt, geometry=False)
-        self.solve(world, dt)
-        self.sleep(world, dt)
+        stage = "collide"
+        try:
+            self.collide(world, dt, geometry=False)
+            stage = "solve"
+            self.solve(world, dt)
+            stage = "sleep"
+            self.sleep(world, dt)
+        except SimulationError as err:
+            # a stage refused the step (e.g. an explicit integrator that cannot be stable)
+            self._revert(world)
+            err.stage = err.stage or stage
+            world.fault = err
+            raise
         k = end_step(B, n, ck.bad)
         if k:
             self._fail(world, dt, ck.slots(k))
@@ -84,13 +94,33 @@ class Pipeline:
         self._checkpoint.restore(B, n)
         stage = "?"
         for name in self.STAGES:
-            getattr(self, name)(world, dt)
+            try:
+                getattr(self, name)(world, dt)
+            except SimulationError:
+                stage = name
+                break
             if self._checkpoint.nonfinite(B, n):
                 stage = name
                 break
+        self._revert(world)
+        # static bodies only turn non-finite through 0 * inf; name the moving culprits first
+        moving = [s for s in bad if B.kind[s] != STATIC]
+        names = [world._handles[int(B.id[s])].name or f"#{int(B.id[s])}" for s in (moving or bad)]
+        err = SimulationError(
+            f"step at t={world.time:.4f} s produced non-finite values in {len(names)} bod"
+            f"{'y' if len(names) == 1 else 'ies'} ({', '.join(names[:8])}) during the '{stage}' stage "
+            f"of solver '{world.solver}'; the world was reverted to the state before the step",
+            bodies=names, stage=stage)
+        world.fault = err
+        raise err
+
+    def _revert(self, world) -> None:
+        """Back to the state before the step, without its user forces and contact impulses:
+        kept, they (and the non-finite impulses warm starting would re-apply) would fail every
+        later step too."""
+        B = world._bodies.view
+        n = world._bodies.n
         self._checkpoint.restore(B, n)
-        # the refused step's user forces and contact impulses go with it: kept, the forces (and the
-        # non-finite impulses warm starting would re-apply) would fail every later step too
         B.f[:n] = 0.0
         B.tau[:n] = 0.0
         c = world._contacts
@@ -98,14 +128,6 @@ class Pipeline:
             tab.jn[:] = 0.0
             tab.jt[:] = 0.0
         world.wake_all()
-        names = [world._handles[int(B.id[s])].name or f"#{int(B.id[s])}" for s in bad]
-        err = SimulationError(
-            f"step at t={world.time:.4f} s produced non-finite values in {len(bad)} bod"
-            f"{'y' if len(bad) == 1 else 'ies'} ({', '.join(names[:8])}) during the '{stage}' stage "
-            f"of solver '{world.solver}'; the world was reverted to the state before the step",
-            bodies=names, stage=stage)
-        world.fault = err
-        raise err
 
     # -- description ----------------------------------------------------
     def info(self, world) -> dict:

@@ -23,21 +23,23 @@ def test_stiff_spring_stays_finite_and_energy_does_not_grow(solver):
 SEED = [(m, i) for m in MODES if m not in CONTINUOUS for i in integrators(m)]
 
 
-@pytest.mark.parametrize("solver,integrator", SEED or [pytest.param(None, None, marks=pytest.mark.skip(
-    reason="no explicit seed mode registered yet"))])
+@pytest.mark.parametrize("solver,integrator", SEED)
 def test_explicit_modes_substep_or_report_instability(solver, integrator):
     """Regime: the same k = 1e6 spring in each explicit seed mode and integrator.
 
-    Outcome: either finite with energy growth <= 1% (automatic sub-stepping), or a
-    SimulationError while the world stays finite and was reverted -- and in no case did the
-    energy grow by more than 1% in any step that was accepted (no garbage before the error)."""
+    Outcome: either finite (automatic sub-stepping) with no secular energy growth -- a
+    symplectic method's energy oscillates about its shadow Hamiltonian, so the peak energy in
+    the last quarter of the run may not exceed the first quarter's by more than 1% -- or a
+    SimulationError while the world stays finite and was reverted, with no step accepted
+    before it that grew the energy by more than 1% (no garbage before the error)."""
     out = stiff_spring(solver, integrator=integrator)
-    assert out.metrics.get("growth", 1.0) <= 1.01, out.figure
     if "error" in out.metrics:
+        assert out.metrics["growth"] <= 1.01, out.figure
         assert out.metrics["reverted"], out.figure
         assert out.metrics["stage"]
     else:
-        assert out.metrics["finite"]
+        assert out.metrics["finite"], out.figure
+        assert out.metrics["drift"] <= 1.01, out.figure
 
 
 def test_stiff_spring_energy_is_measured_right():
