@@ -81,6 +81,16 @@ def _wake_touched(B, n, C, nc, S, ns, slop):
 
 
 @kernel
+def _restless(B, i, lin_tol, ang_tol):
+    """Too fast to sleep: the centre or the rim (|w| times the bounding radius, as Box2D v3
+    measures rotation) moves faster than ``lin_tol``, or it spins faster than ``ang_tol``
+    (which only matters for tiny bodies, whose rims are slow even when spinning visibly)."""
+    v2 = B.v[i, 0] * B.v[i, 0] + B.v[i, 1] * B.v[i, 1]
+    w = abs(B.w[i])
+    return v2 > lin_tol * lin_tol or w * B.bound_r[i] > lin_tol or w > ang_tol
+
+
+@kernel
 def _wake_pushed(B, n, lin_tol, ang_tol):
     """Sleepers are put to sleep at rest, so a velocity now came from an impulse this step
     (e.g. a speculative row, not yet touching, that stopped a body thrown at the sleeper).
@@ -89,8 +99,7 @@ def _wake_pushed(B, n, lin_tol, ang_tol):
     for i in range(n):
         if B.kind[i] != DYNAMIC or B.awake[i] == 1 or not _moving(B, i):
             continue
-        v2 = B.v[i, 0] * B.v[i, 0] + B.v[i, 1] * B.v[i, 1]
-        if v2 > lin_tol * lin_tol or abs(B.w[i]) > ang_tol:
+        if _restless(B, i, lin_tol, ang_tol):
             _wake_island(B, n, i)
         else:
             B.v[i, 0] = 0.0
@@ -110,8 +119,7 @@ def update_islands(B, n, C, nc, S, ns, dt, slop, lin_tol, ang_tol, time_to_sleep
     for i in range(n):
         parent[i] = i
         if B.kind[i] == DYNAMIC and B.awake[i] == 1:
-            v2 = B.v[i, 0] * B.v[i, 0] + B.v[i, 1] * B.v[i, 1]
-            if v2 > lin_tol * lin_tol or abs(B.w[i]) > ang_tol:
+            if _restless(B, i, lin_tol, ang_tol):
                 B.sleep_t[i] = 0.0
             else:
                 B.sleep_t[i] += dt

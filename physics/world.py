@@ -62,9 +62,11 @@ class World:
         # the speculative margin catches pairs that will touch during the step
         self.linear_slop = 0.005
         self.speculative_distance = 4 * self.linear_slop
-        # sleeping thresholds (Box2D-like): below these speeds for `time_to_sleep` seconds
+        # sleeping thresholds (Box2D v3-like): an island sleeps once every body's centre and rim
+        # (angular speed x bounding radius) stay below `sleep_linear` for `time_to_sleep` seconds;
+        # `sleep_angular` caps the spin of tiny bodies, whose rims are slow even when spinning
         self.sleep_linear = 0.05
-        self.sleep_angular = 2.0 * math.pi / 180.0 * 2.0
+        self.sleep_angular = 0.5
         self.time_to_sleep = 0.5
         self.gravity = gravity
         self.dt = dt
