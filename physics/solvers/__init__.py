@@ -38,7 +38,6 @@ _REGISTRY = {
     "impulse": "physics.solvers.impulse:ImpulseMode",
     "penalty": "physics.solvers.penalty:PenaltyMode",
     "hybrid": "physics.solvers.hybrid:HybridMode",
-    "xpbd": "physics.solvers.xpbd:XPBD",
 }
 _CACHE: dict[str, SolverMode] = {}
 
