@@ -145,7 +145,7 @@ _WORLD = {
         "gravity": _vec("m/s^2", default=WORLD_DEFAULTS["gravity"]),
         "dt": _num("time step (s)", exclusiveMinimum=0, default=WORLD_DEFAULTS["dt"]),
         "solver": {"type": "string", "default": WORLD_DEFAULTS["solver"],
-                   "description": "solver mode: soft_step, sequential_impulse, impulse, penalty, hybrid, xpbd "
+                   "description": "solver mode: soft_step, sequential_impulse, impulse, penalty, hybrid "
                                   "(checked against the modes this build has)"},
         "settings": {"type": "object", "default": {},
                      "description": "the chosen solver's parameters (names, ranges and defaults are declared by "
