@@ -37,10 +37,6 @@ def test_heavy_on_light_sequential_impulse_keeps_order():
 
 
 @pytest.mark.parametrize("solver", CONTINUOUS)
-@known_bug("physics/solvers/soft_springs.py solve_springs: stiff springs switch to the implicit "
-           "(soft constraint) form but are solved by one Gauss-Seidel pass per (sub)step; a 1 kg link "
-           "between an anchor and a 100 kg load gains energy (soft_step +2e3 J, sequential_impulse "
-           "+5.7e4 J over a 250 J drop)")
 def test_spring_chain_carrying_100kg_settles_without_gaining_energy(solver):
     """Regime: world anchor - spring - four 1 kg boxes - springs - a 100 kg box (k 2e4 N/m,
     c 400 N s/m, dt 1/60), released at rest lengths, 15 s.
