@@ -513,6 +513,13 @@ class World:
                           B.shape[:n], B.radius[:n], B.x[:n], B.q[:n], B.com[:n], B.id[:n], B.aabb[:n],
                           ends, pts, nrm)
 
+    def quadtree_cells(self) -> np.ndarray:
+        """Rectangles (K, 4: min x, min y, max x, max y) of the broad phase's quadtree over the
+        current AABBs, for debug overlays (built on demand; stepping does not need it)."""
+        from .broadphase import quadtree_cells
+        self._pipeline.refresh_geometry(self)
+        return quadtree_cells(self._bodies.view, self._bodies.n)
+
     def save_scene(self, path, name: str | None = None, description: str | None = None) -> None:
         """Write this world as a scene file (atomically: temp file + rename)."""
         from .scene import save_scene

@@ -180,3 +180,16 @@ def test_solver_switch_keeps_per_mode_settings():
         w.solver = other[0]
         w.solver = "soft_step"
         assert w.settings["substeps"] == 8
+
+
+def test_quadtree_cells_cover_every_body():
+    w, ground = make_world()
+    for i in range(60):
+        w.add_body(physics.Polygon.box(0.5, 0.5), position=((i % 10) - 5, 1 + i // 10))
+    cells = w.quadtree_cells()
+    assert cells.ndim == 2 and cells.shape[1] == 4 and len(cells) >= 1
+    lo = cells[:, :2].min(axis=0)
+    hi = cells[:, 2:].max(axis=0)
+    for b in w.bodies:
+        v = b.world_vertices()
+        assert np.all(v >= lo - 0.05) and np.all(v <= hi + 0.05)
