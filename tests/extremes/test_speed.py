@@ -2,7 +2,7 @@
 import pytest
 
 from bench.reliability import bullets, volley
-from extremes_common import CONTINUOUS, known_bug
+from extremes_common import CONTINUOUS
 
 
 @pytest.mark.parametrize("solver", CONTINUOUS)
@@ -25,10 +25,6 @@ def test_bullets_at_300_mps_do_not_tunnel(solver):
 
 
 @pytest.mark.parametrize("solver", CONTINUOUS)
-@known_bug("speculative contacts between fast neighbours: bodies flying side by side 3 m apart at "
-           "1000 m/s get a speculative contact with each other (their swept AABBs overlap); once one "
-           "has stopped at the wall the other is deflected by a ghost impulse along their centre line "
-           "(a disc left at -598, +891 m/s) and crosses the 1 cm wall")
 def test_volley_does_not_tunnel(solver):
     """Regime: the 14 bodies 3 m apart at 1000 m/s (a volley).
 
