@@ -551,7 +551,12 @@ def substep_fit(speed, scene, mode=DEFAULT_MODE):
         dflt = solvers.get(mode).settings["substeps"].default
     except (KeyError, ValueError, ImportError):
         return None
-    pts = [((r["settings"] or {}).get("substeps", dflt), r["ms_step"]) for r in speed
+    # noise-cancelled times: each configuration's interleaved ratio to pymunk times pymunk's pooled median
+    pm = next((r.get("ms_step") for r in speed if r["scene"] == scene and r["engine"] == "pymunk"), None)
+
+    def ms(r):
+        return r["ratio_pymunk"] * pm if pm and r.get("ratio_pymunk") else r["ms_step"]
+    pts = [((r["settings"] or {}).get("substeps", dflt), ms(r)) for r in speed
            if r["scene"] == scene and r["engine"] == "stelkropp" and r["mode"] == mode and r.get("ms_step")
            and set(r["settings"] or {}) <= {"substeps"} and r.get("status") == "ok"]
     if len({p[0] for p in pts}) < 3:
@@ -579,7 +584,8 @@ def summary_lines(res):
         if key in BOX2D_V3 and pm and pm.get("ms_step"):
             (lo, hi), pm_ref = BOX2D_V3[key]
             est = pm["ms_step"] * 0.5 * (lo + hi) / pm_ref
-            txt += f"; vs Box2D v3 (estimated {est:.3f} ms here): {r['ms_step'] / est:.1f}x"
+            ours_ms = rp * pm["ms_step"] if rp is not None else r["ms_step"]  # noise-cancelled
+            txt += f"; vs Box2D v3 (estimated {est:.3f} ms here, from pymunk's time): {ours_ms / est:.1f}x"
         L.append(txt)
     for key in ("pyramid20", "pyramid40", "rain1000"):
         f = substep_fit(sp, key)
@@ -754,7 +760,9 @@ def render_docs(res, rel, outdir):
     if res.get("accuracy"):
         ah, ar = accuracy_table(res["accuracy"])
         L += ["## Accuracy against known answers", "",
-              accuracy.__doc__.split("Scenarios", 1)[-1].split("\n", 1)[-1].rstrip(), "",
+              "Scenarios (`bench/accuracy.py`; dt 1/60 and gravity -10 unless the sweep changes dt), the same "
+              "in every engine:", "",
+              accuracy.__doc__[accuracy.__doc__.index("* ``spring``"):].rstrip(), "",
               "Values with default settings at dt 1/60 (velocities of the elastic collision as a/b; "
               "the full sweep over settings, dt and integrators is in `bench/results/accuracy.csv`):", "",
               md_table(ah, ar), "",
