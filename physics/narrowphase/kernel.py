@@ -66,7 +66,9 @@ def may_touch(B, a, b, dt, spec):
     if dd > 0.0:
         t = min(1.0, max(0.0, -(cx * dx + cy * dy) / dd))
     reach = B.bound_r[a] + B.bound_r[b] + spec
-    return math.hypot(cx + t * dx, cy + t * dy) <= reach
+    # written so that a non-finite motion (overflowing speeds) keeps the pair: the finite
+    # check after the step must see what it does
+    return not (math.hypot(cx + t * dx, cy + t * dy) > reach)
 
 
 @kernel(inline="always")
