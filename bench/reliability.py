@@ -618,10 +618,11 @@ class Probe:
 PROBES = [
     Probe("mass ratio: stack", "1000 kg box on a 1 kg box", mass_ratio_stack,
           "Sub-stepping is what carries a heavy load on a light body: use soft_step (raise substeps for "
-          "larger ratios); in sequential_impulse raise velocity_iterations."),
+          "larger ratios). sequential_impulse fails here (projected Gauss-Seidel at 1000:1, as in Box2D "
+          "2.x; the block solver and 64 velocity iterations do not help)."),
     Probe("mass ratio: spring chain", "1 kg links in a spring chain (k 2e4) carrying 100 kg", spring_chain,
-          "The seed modes (explicit springs, sub-stepped) settle it; soft_step and sequential_impulse "
-          "gain energy here (implicit springs solved in one Gauss-Seidel pass): lower k or raise substeps."),
+          "Every mode settles it: soft_step and sequential_impulse solve their stiff springs together "
+          "(backward Euler on the whole chain), the seed modes sub-step their explicit springs."),
     Probe("stiff spring", "k = 1e6 N/m on 1 kg at dt = 1/60 (k dt^2/m = 278)", stiff_spring,
           "soft_step or sequential_impulse (implicit springs: stable, energy is damped, not gained); an "
           "explicit mode must sub-step or it refuses the step."),
@@ -629,8 +630,8 @@ PROBES = [
           "Modes with speculative contacts (soft_step, sequential_impulse) stop bullets; avoid modes "
           "without continuous collision for fast bodies."),
     Probe("speed: volley", "14 bodies at 1000 m/s, 3 m apart, against a 1 cm wall", volley,
-          "Space fast bodies more than 2 v dt apart or slow them down: speculative contacts between "
-          "fast neighbours can deflect them."),
+          "soft_step or sequential_impulse: pairs that cannot meet within the step get no speculative "
+          "rows, so fast neighbours fly past each other."),
     Probe("scale: 1 cm", "five 0.01 m boxes stacked", small_stack,
           "soft_step with substeps=16, contact_hertz=120 (sink < 10%, see tests/extremes/test_scale.py); "
           "better, model in metres with bodies >= 0.1 m."),
@@ -646,7 +647,8 @@ PROBES = [
     Probe("slivers", "1 m x 1 mm boxes (1:1000), dropped, end-on at 10 m/s, stacked", slivers,
           "soft_step (sub-steps and rotation cap); give slivers some thickness (>= 1 cm) otherwise."),
     Probe("coincident bodies", "eight boxes created on top of each other", coincident,
-          "soft_step separates them gently (push_out_speed, default 3 m/s); penalty/hybrid fling them."),
+          "soft_step separates them gently (push_out_speed, default 3 m/s); penalty/hybrid cap their "
+          "push-out too (push_out_speed, default 2 m/s)."),
     Probe("long run", "reduced tumbler, 100 000 steps", long_run,
           "soft_step for long unattended runs.", quick_kw=dict(steps=5000)),
 ]
