@@ -14,9 +14,9 @@ import numpy as np
 from .._jit import kernel
 from ..settings import Setting, declare
 from . import SolverMode
-from .contact_prep import prepare_contacts
-from .motion import integrate_positions, integrate_velocities, reset_displacements
-from .soft_contact import apply_restitution, softness, solve_contacts, track_max_impulse, warm_start
+from .motion import integrate_positions_rot, integrate_velocities
+from .soft_contact import softness
+from .soft_rows import NF, prepare_rows, restitution_rows, solve_rows, warm_start_rows
 from .soft_springs import solve_springs
 from .warm_handoff import adopt
 
@@ -31,7 +31,7 @@ def _zero_impulses(C, nc):
 
 @kernel
 def soft_step(B, n, C, nc, S, ns, gx, gy, dt, substeps, iterations, hertz, zeta, push, warm, relax,
-              rest_threshold, stick_speed, block, DP, DQ, DC, DS):
+              rest_threshold, stick_speed, block, R, DP, DC, DS):
     h = dt / substeps
     inv_h = 1.0 / h
     # contacts against static bodies are twice as stiff (they carry the whole load); both are
@@ -40,24 +40,26 @@ def soft_step(B, n, C, nc, S, ns, gx, gy, dt, substeps, iterations, hertz, zeta,
     cap = 0.25 * inv_h
     soft_dyn = softness(min(hertz, cap), zeta, h)
     soft_static = softness(min(2.0 * hertz, cap), zeta, h)
-    prepare_contacts(B, C, nc, stick_speed)
+    prepare_rows(B, C, nc, stick_speed, R)
     if not warm:
         _zero_impulses(C, nc)
-    reset_displacements(n, DP, DQ, DC, DS)
-    track_max_impulse(C, nc, C.bias, True)
+    for i in range(n):  # displacement since the step began: none yet
+        DP[i, 0] = 0.0
+        DP[i, 1] = 0.0
+        DC[i] = 1.0
+        DS[i] = 0.0
     for _ in range(substeps):
         integrate_velocities(B, n, gx, gy, h)
         if ns > 0:
             solve_springs(B, S, ns, h)
-        warm_start(B, C, nc)
-        for _ in range(iterations):
-            solve_contacts(B, C, nc, DP, DC, DS, inv_h, True, soft_dyn, soft_static, push, block)
-        track_max_impulse(C, nc, C.bias, False)
-        integrate_positions(B, n, h, DP, DQ, DC, DS)
+        warm_start_rows(B, C, nc, R)
+        for it in range(iterations):
+            solve_rows(B, C, nc, R, DP, DC, DS, inv_h, True, soft_dyn, soft_static, push, block,
+                       it == iterations - 1)
+        integrate_positions_rot(B, n, h, DP, DC, DS)
         if relax:
-            solve_contacts(B, C, nc, DP, DC, DS, inv_h, False, soft_dyn, soft_static, push, block)
-            track_max_impulse(C, nc, C.bias, False)
-    apply_restitution(B, C, nc, rest_threshold, C.bias)
+            solve_rows(B, C, nc, R, DP, DC, DS, inv_h, False, soft_dyn, soft_static, push, block, True)
+    restitution_rows(B, C, nc, R, rest_threshold)
 
 
 class SoftStep(SolverMode):
@@ -81,21 +83,23 @@ class SoftStep(SolverMode):
 
     def _alloc(self, cap):
         self.DP = np.zeros((cap, 2))
-        self.DQ = np.zeros(cap)
         self.DC = np.ones(cap)
         self.DS = np.zeros(cap)
+        self.R = np.zeros((64, NF))
 
     def step(self, world, dt, p):
         n = world._bodies.n
-        if n > len(self.DQ):
+        if n > len(self.DC):
             self._alloc(2 * n)
         c = world._contacts
+        if c.n > len(self.R):
+            self.R = np.zeros((max(c.n, 2 * len(self.R)), NF))
         adopt(world, dt / p["substeps"])  # impulses per sub-step; rescaled after a mode switch
         g = world._gravity
         soft_step(world._bodies.view, n, c.cur, c.n, world._springs.view, world._springs.n,
                   g[0], g[1], dt, p["substeps"], p["iterations"], p["contact_hertz"], p["damping_ratio"],
                   p["push_out_speed"], p["warm_starting"], p["relax"], p["restitution_threshold"],
-                  p["stick_speed"], p["block_solver"], self.DP, self.DQ, self.DC, self.DS)
+                  p["stick_speed"], p["block_solver"], self.R, self.DP, self.DC, self.DS)
 
     def stages(self, world):
         out = ["integrate:symplectic_euler (sub-stepped)", "contacts:soft"]

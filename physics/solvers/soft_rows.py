@@ -1,0 +1,326 @@
+"""The contact rows of ``soft_step``, laid out for its inner loop.
+
+The model is that of soft_contact.py (soft normal rows with bias, relax,
+Coulomb friction, the 2x2 block solver of block_normal.py, restitution); this
+module only arranges the work so that a sub-step pass is cheap:
+
+* everything that is fixed for the step is computed once in ``prepare_rows``
+  into one scratch row per manifold (``R``, NF floats): for each point the
+  anchor projections r x n and r . n of both bodies (the tangent is
+  t = (-n_y, n_x), so r x t = r . n), the effective masses, the separation at
+  the start of the step, the friction coefficient in force, and for two-point
+  manifolds the block solver's K matrix and whether it is well conditioned;
+* a pass loads the two bodies' velocities into locals once per manifold, solves
+  both points' normal and friction rows on them and writes them back once;
+* the largest normal impulse of each point (restitution needs to know whether a
+  point pushed this step) is tracked inside the passes, not by an extra loop.
+
+With these projections the relative normal speed is
+  v_n = (v_b - v_a) . n + w_b (r_b x n) - w_a (r_a x n),
+an impulse j along n changes w_a by -I_a^-1 j (r_a x n), and the separation
+after the bodies moved by (dp, R(dq)) since the step began is
+  s = s0 + (dp_b - dp_a) . n + (c_b - 1)(r_b . n) + s_b (r_b x n) - (same for a).
+"""
+from __future__ import annotations
+
+from .._jit import kernel
+
+# per point p the fields start at p * PT
+RNA, RNB, RTA, RTB, MASS_N, MASS_T, SEP0, MU, VN0, MAXJ = range(10)
+PT = 10
+K12 = 2 * PT      # block solver: off-diagonal of K (k11, k22 are 1 / mass_n)
+DET = K12 + 1     # det K
+BLOCK = K12 + 2   # 1.0 when K is well conditioned (the block solver may run)
+RIGID = K12 + 3   # 1.0 when one of the bodies does not move (static/kinematic): stiffer rows
+NF = K12 + 4
+
+MAX_CONDITION = 1000.0  # as block_normal.MAX_CONDITION: k11^2 / det above this, points (nearly) redundant
+
+
+@kernel
+def prepare_rows(B, C, nc, stick_speed, R):
+    """Fill R[:nc] from the manifolds and the bodies' state at the start of the step."""
+    for k in range(nc):
+        a = C.a[k]
+        b = C.b[k]
+        nx = C.normal[k, 0]
+        ny = C.normal[k, 1]
+        ima = B.inv_m[a]
+        imb = B.inv_m[b]
+        iia = B.inv_i[a]
+        iib = B.inv_i[b]
+        xax = B.x[a, 0]
+        xay = B.x[a, 1]
+        xbx = B.x[b, 0]
+        xby = B.x[b, 1]
+        vax = B.v[a, 0]
+        vay = B.v[a, 1]
+        wa = B.w[a]
+        vbx = B.v[b, 0]
+        vby = B.v[b, 1]
+        wb = B.w[b]
+        dvnx = (vbx - vax) * nx + (vby - vay) * ny
+        dvtx = -(vbx - vax) * ny + (vby - vay) * nx
+        cnt = C.count[k]
+        for p in range(cnt):
+            o = p * PT
+            rax = C.point[k, p, 0] - xax
+            ray = C.point[k, p, 1] - xay
+            rbx = C.point[k, p, 0] - xbx
+            rby = C.point[k, p, 1] - xby
+            rna = rax * ny - ray * nx
+            rnb = rbx * ny - rby * nx
+            rta = rax * nx + ray * ny
+            rtb = rbx * nx + rby * ny
+            R[k, o + RNA] = rna
+            R[k, o + RNB] = rnb
+            R[k, o + RTA] = rta
+            R[k, o + RTB] = rtb
+            kn = ima + imb + iia * rna * rna + iib * rnb * rnb
+            R[k, o + MASS_N] = 1.0 / kn if kn > 0.0 else 0.0
+            kt = ima + imb + iia * rta * rta + iib * rtb * rtb
+            R[k, o + MASS_T] = 1.0 / kt if kt > 0.0 else 0.0
+            R[k, o + SEP0] = -C.depth[k, p]
+            R[k, o + VN0] = dvnx + wb * rnb - wa * rna
+            vt = dvtx + wb * rtb - wa * rta
+            # Coulomb (seed eq. 23): static coefficient while sticking, dynamic once sliding
+            R[k, o + MU] = C.mu_s[k] if abs(vt) <= stick_speed else C.mu_d[k]
+            R[k, o + MAXJ] = 0.0
+        R[k, RIGID] = 1.0 if (ima == 0.0 or imb == 0.0) else 0.0
+        R[k, BLOCK] = 0.0
+        if cnt == 2:
+            ra0 = R[k, RNA]
+            rb0 = R[k, RNB]
+            ra1 = R[k, PT + RNA]
+            rb1 = R[k, PT + RNB]
+            im = ima + imb
+            k11 = im + iia * ra0 * ra0 + iib * rb0 * rb0
+            k22 = im + iia * ra1 * ra1 + iib * rb1 * rb1
+            k12 = im + iia * ra0 * ra1 + iib * rb0 * rb1
+            det = k11 * k22 - k12 * k12
+            R[k, K12] = k12
+            R[k, DET] = det
+            if k11 * k11 < MAX_CONDITION * det:
+                R[k, BLOCK] = 1.0
+
+
+@kernel
+def warm_start_rows(B, C, nc, R):
+    """Apply the accumulated impulses (normal and friction) of every point."""
+    for k in range(nc):
+        a = C.a[k]
+        b = C.b[k]
+        nx = C.normal[k, 0]
+        ny = C.normal[k, 1]
+        px = 0.0
+        py = 0.0
+        aa = 0.0
+        ab = 0.0
+        for p in range(C.count[k]):
+            o = p * PT
+            jn = C.jn[k, p]
+            jt = C.jt[k, p]
+            px += jn * nx - jt * ny
+            py += jn * ny + jt * nx
+            aa += jn * R[k, o + RNA] + jt * R[k, o + RTA]
+            ab += jn * R[k, o + RNB] + jt * R[k, o + RTB]
+        ima = B.inv_m[a]
+        imb = B.inv_m[b]
+        B.v[a, 0] -= ima * px
+        B.v[a, 1] -= ima * py
+        B.w[a] -= B.inv_i[a] * aa
+        B.v[b, 0] += imb * px
+        B.v[b, 1] += imb * py
+        B.w[b] += B.inv_i[b] * ab
+
+
+@kernel
+def solve_rows(B, C, nc, R, DP, DC, DS, inv_h, use_bias, soft_dyn, soft_static, push_speed, block, track):
+    """One Gauss-Seidel pass over the manifolds: soft normal rows (>= 0), then friction.
+
+    ``use_bias``: the biased pass (overlap pushed out softly); without it the
+    relax pass.  Speculative points (still apart) are rigid rows that let the
+    bodies close the gap and no further.  ``block``: a two-point manifold whose
+    rows are in the same regime is solved as a 2x2 LCP (block_normal.py).
+    ``track``: record each point's largest normal impulse (restitution).
+    """
+    for k in range(nc):
+        a = C.a[k]
+        b = C.b[k]
+        nx = C.normal[k, 0]
+        ny = C.normal[k, 1]
+        ima = B.inv_m[a]
+        imb = B.inv_m[b]
+        iia = B.inv_i[a]
+        iib = B.inv_i[b]
+        vax = B.v[a, 0]
+        vay = B.v[a, 1]
+        wa = B.w[a]
+        vbx = B.v[b, 0]
+        vby = B.v[b, 1]
+        wb = B.w[b]
+        if R[k, RIGID] != 0.0:
+            rate, mscale, iscale = soft_static
+        else:
+            rate, mscale, iscale = soft_dyn
+        # displacement of b relative to a since the step began, along n
+        ddn = (DP[b, 0] - DP[a, 0]) * nx + (DP[b, 1] - DP[a, 1]) * ny
+        cam = DC[a] - 1.0
+        cbm = DC[b] - 1.0
+        sa = DS[a]
+        sb = DS[b]
+        cnt = C.count[k]
+        # bias, mass scale and impulse scale of both normal rows in this pass
+        bias0 = 0.0
+        ms0 = 1.0
+        is0 = 0.0
+        bias1 = 0.0
+        ms1 = 1.0
+        is1 = 0.0
+        for p in range(cnt):
+            o = p * PT
+            sep = (R[k, o + SEP0] + ddn + cbm * R[k, o + RTB] + sb * R[k, o + RNB]
+                   - cam * R[k, o + RTA] - sa * R[k, o + RNA])
+            bias = 0.0
+            ms = 1.0
+            isc = 0.0
+            if sep > 0.0:
+                bias = sep * inv_h  # speculative: may approach until touching, no further
+            elif use_bias:
+                bias = max(rate * sep, -push_speed)
+                ms = mscale
+                isc = iscale
+            if p == 0:
+                bias0, ms0, is0 = bias, ms, isc
+            else:
+                bias1, ms1, is1 = bias, ms, isc
+        done = False
+        if block and cnt == 2 and R[k, BLOCK] != 0.0 and ms0 == ms1:
+            rna0 = R[k, RNA]
+            rnb0 = R[k, RNB]
+            rna1 = R[k, PT + RNA]
+            rnb1 = R[k, PT + RNB]
+            im = ima + imb
+            k11 = im + iia * rna0 * rna0 + iib * rnb0 * rnb0
+            k22 = im + iia * rna1 * rna1 + iib * rnb1 * rnb1
+            k12 = R[k, K12]
+            det = R[k, DET]
+            old0 = C.jn[k, 0]
+            old1 = C.jn[k, 1]
+            dvn = (vbx - vax) * nx + (vby - vay) * ny
+            v0 = dvn + wb * rnb0 - wa * rna0
+            v1 = dvn + wb * rnb1 - wa * rna1
+            # free speeds (this manifold's impulses removed) plus bias
+            g0 = v0 - (k11 * old0 + k12 * old1) + bias0
+            g1 = v1 - (k12 * old0 + k22 * old1) + bias1
+            ms = ms0
+            done = True
+            # case 1: both points push
+            x0 = -ms * (k22 * g0 - k12 * g1) / det
+            x1 = -ms * (k11 * g1 - k12 * g0) / det
+            if not (x0 >= 0.0 and x1 >= 0.0):
+                # case 2: only point 0 pushes, point 1 separates
+                x0 = -ms * g0 / k11
+                x1 = 0.0
+                if not (x0 >= 0.0 and g1 + k12 * x0 >= 0.0):
+                    # case 3: only point 1
+                    x0 = 0.0
+                    x1 = -ms * g1 / k22
+                    if not (x1 >= 0.0 and g0 + k12 * x1 >= 0.0):
+                        # case 4: neither
+                        x1 = 0.0
+                        if not (g0 >= 0.0 and g1 >= 0.0):
+                            done = False
+            if done:
+                C.jn[k, 0] = x0
+                C.jn[k, 1] = x1
+                d0 = x0 - old0
+                d1 = x1 - old1
+                d = d0 + d1
+                vax -= ima * d * nx
+                vay -= ima * d * ny
+                wa -= iia * (d0 * rna0 + d1 * rna1)
+                vbx += imb * d * nx
+                vby += imb * d * ny
+                wb += iib * (d0 * rnb0 + d1 * rnb1)
+        if not done:
+            for p in range(cnt):
+                o = p * PT
+                rna = R[k, o + RNA]
+                rnb = R[k, o + RNB]
+                if p == 0:
+                    bias, ms, isc = bias0, ms0, is0
+                else:
+                    bias, ms, isc = bias1, ms1, is1
+                vn = (vbx - vax) * nx + (vby - vay) * ny + wb * rnb - wa * rna
+                old = C.jn[k, p]
+                j = -R[k, o + MASS_N] * ms * (vn + bias) - isc * old
+                new = max(old + j, 0.0)
+                C.jn[k, p] = new
+                j = new - old
+                vax -= ima * j * nx
+                vay -= ima * j * ny
+                wa -= iia * j * rna
+                vbx += imb * j * nx
+                vby += imb * j * ny
+                wb += iib * j * rnb
+        for p in range(cnt):
+            o = p * PT
+            rta = R[k, o + RTA]
+            rtb = R[k, o + RTB]
+            jn = C.jn[k, p]
+            if track and jn > R[k, o + MAXJ]:
+                R[k, o + MAXJ] = jn
+            vt = -(vbx - vax) * ny + (vby - vay) * nx + wb * rtb - wa * rta
+            limit = R[k, o + MU] * jn
+            old = C.jt[k, p]
+            new = min(max(old - R[k, o + MASS_T] * vt, -limit), limit)
+            C.jt[k, p] = new
+            j = new - old
+            # impulse j along t = (-n_y, n_x)
+            vax += ima * j * ny
+            vay -= ima * j * nx
+            wa -= iia * j * rta
+            vbx -= imb * j * ny
+            vby += imb * j * nx
+            wb += iib * j * rtb
+        B.v[a, 0] = vax
+        B.v[a, 1] = vay
+        B.w[a] = wa
+        B.v[b, 0] = vbx
+        B.v[b, 1] = vby
+        B.w[b] = wb
+
+
+@kernel
+def restitution_rows(B, C, nc, R, threshold):
+    """Newton's law v_n' = -e v_n (seed eq. 13) for points that hit faster than ``threshold``
+    and pushed this step (a speculative point never reached does not bounce)."""
+    for k in range(nc):
+        e = C.e[k]
+        if e == 0.0:
+            continue
+        a = C.a[k]
+        b = C.b[k]
+        nx = C.normal[k, 0]
+        ny = C.normal[k, 1]
+        ima = B.inv_m[a]
+        imb = B.inv_m[b]
+        for p in range(C.count[k]):
+            o = p * PT
+            vn0 = R[k, o + VN0]
+            if vn0 > -threshold or R[k, o + MAXJ] == 0.0:
+                continue
+            rna = R[k, o + RNA]
+            rnb = R[k, o + RNB]
+            vn = (B.v[b, 0] - B.v[a, 0]) * nx + (B.v[b, 1] - B.v[a, 1]) * ny + B.w[b] * rnb - B.w[a] * rna
+            old = C.jn[k, p]
+            new = max(old - R[k, o + MASS_N] * (vn + e * vn0), 0.0)
+            C.jn[k, p] = new
+            j = new - old
+            B.v[a, 0] -= ima * j * nx
+            B.v[a, 1] -= ima * j * ny
+            B.w[a] -= B.inv_i[a] * j * rna
+            B.v[b, 0] += imb * j * nx
+            B.v[b, 1] += imb * j * ny
+            B.w[b] += B.inv_i[b] * j * rnb
