@@ -53,6 +53,15 @@ class Camera:
         # shift so the box is centred in the area right of the panels
         self.center = mid - np.array([0.5 * (avoid_left - avoid_right) / self.scale, 0.0])
 
+    def look_at(self, center, scale: float, avoid_left: float = 0.0, avoid_right: float = 0.0) -> None:
+        """Put world point ``center`` at the middle of the area between ``avoid_left`` and
+        ``avoid_right`` pixels (panels), at ``scale`` pixels per metre."""
+        if self.width - avoid_left - avoid_right < 300:
+            avoid_left = avoid_right = 0.0
+        self.scale = float(np.clip(scale, self.MIN_SCALE, self.MAX_SCALE))
+        self.center = np.asarray(center, dtype=np.float64).reshape(2) - \
+            np.array([0.5 * (avoid_left - avoid_right) / self.scale, 0.0])
+
     def matrix(self) -> np.ndarray:
         """World -> clip space as a column-major 3x3 (for a mat3 uniform)."""
         sx = 2.0 * self.scale / self.width

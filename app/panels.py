@@ -67,6 +67,8 @@ class Panels:
     def draw(self):
         app = self.app
         io = imgui.get_io()
+        app.ui_rects.pop("main_window", None)
+        app.ui_rects.pop("stats_window", None)
         if app.warmup_active():
             self.progress_window()
             return
@@ -109,12 +111,18 @@ class Panels:
         self.solver_section()
         self.scene_section(open_=app.scene_errors != [])
         self.view_section()
+        self.record_window("main_window")
         imgui.end()
 
     def record(self, key):
         """Remember the last item's screen rectangle (x0, y0, x1, y1; y down) for tests and scripts."""
         a, b = imgui.get_item_rect_min(), imgui.get_item_rect_max()
         self.app.ui_rects[key] = (a.x, a.y, b.x, b.y)
+
+    def record_window(self, key):
+        """Remember the current window's rectangle (the scene is framed beside the panels)."""
+        a, b = imgui.get_window_pos(), imgui.get_window_size()
+        self.app.ui_rects[key] = (a.x, a.y, a.x + b.x, a.y + b.y)
 
     def header(self, label, open_=True):
         flags = imgui.TreeNodeFlags_.default_open.value if open_ else 0
@@ -242,6 +250,7 @@ class Panels:
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(RED, self.edit_error)
             imgui.pop_text_wrap_pos()
+            self.record("inspector:error")
         if imgui.button("Delete (Del)"):
             app.delete_selection()
         imgui.same_line()
@@ -258,6 +267,7 @@ class Panels:
             self.edit_error = ""
         except ValueError as exc:
             self.edit_error = f"refused: {exc}"
+            self.app.notify(f"{field} {self.edit_error}", error=True)
 
     def body_inspector(self, b):
         shape = b.shape
@@ -282,6 +292,7 @@ class Panels:
         if ch:
             self.edit(b, "angular_velocity", v)
         ch, v = imgui.input_float("density", b.density, 0.1, 1.0, "%.3f", ENTER)
+        self.record("inspector:density")
         if ch:
             self.edit(b, "density", v)
         ch, v = imgui.input_float("restitution", b.restitution, 0.05, 0.2, "%.3f", ENTER)
@@ -450,9 +461,11 @@ class Panels:
             return
         o = app.overlays
         for label, attr in (("contacts and normals (C)", "contacts"), ("AABBs (B)", "aabbs"),
+                            ("quadtree (Q)", "quadtree"),
                             ("velocity arrows (V)", "velocities"), ("centres of mass (M)", "com"),
                             ("springs", "springs")):
             ch, v = imgui.checkbox(label, getattr(o, attr))
+            self.record(f"overlay:{attr}")
             if ch:
                 setattr(o, attr, v)
         ch, self.show_stats = imgui.checkbox("stats window", self.show_stats)
@@ -488,6 +501,7 @@ class Panels:
                 self.plot("momentum (kg m/s)", t, [("|p|", s.get("p"))], size)
                 self.plot("max penetration (m)", t, [("depth", s.get("pen"))], size)
                 self.plot("contacts", t, [("contacts", s.get("contacts"))], size)
+        self.record_window("stats_window")
         imgui.end()
 
     def plot(self, title, t, series, size):

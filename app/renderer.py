@@ -40,6 +40,7 @@ SPRING_SELECTED = _rgba("#fff2c0")
 CONTACT_COLOR = _rgba("#ff5a5a")
 NORMAL_COLOR = _rgba("#ffd05a")
 AABB_COLOR = _rgba("#7fe0a0", 0.55)
+QUADTREE_COLOR = _rgba("#c890ff", 0.45)
 VEL_COLOR = _rgba("#6df0ff", 0.9)
 COM_COLOR = _rgba("#ffffff")
 PREVIEW_COLOR = _rgba("#ffffff", 0.85)
@@ -115,6 +116,7 @@ class Layer:
 class Overlays:
     contacts: bool = False
     aabbs: bool = False
+    quadtree: bool = False
     velocities: bool = False
     com: bool = False
     springs: bool = True
@@ -237,8 +239,12 @@ class Renderer:
             line[sel] = SELECT_LINE
         return fill, line
 
-    def build(self, rd, camera, overlays: Overlays, decor: Decor, spring_ids=None):
-        """numpy: render data -> vertex arrays for every layer, then upload them."""
+    def build(self, rd, camera, overlays: Overlays, decor: Decor, spring_ids=None, quadtree=None,
+              velocities=None):
+        """numpy: render data -> vertex arrays for every layer, then upload them.
+
+        ``quadtree``: (K, 4) cell rectangles (``world.quadtree_cells()``) when that overlay is on;
+        ``velocities``: (N, 2) body velocities in render-data order when the arrows are on."""
         t0 = time.perf_counter()
         scale = camera.scale
         fill, line = self.body_colors(rd, decor)
@@ -279,18 +285,15 @@ class Renderer:
                 sel = np.isin(spring_ids, list(decor.selected_springs) or [-1])
             segs += self._coils(ends[mask & ~sel], scale, SPRING_COLOR)
             segs += self._coils(ends[mask & sel], scale, SPRING_SELECTED, 3.0)
+        if overlays.quadtree and quadtree is not None and len(quadtree):
+            segs.append(self._rects(quadtree, 1.0, QUADTREE_COLOR, scale))
         if overlays.aabbs and len(rd.aabb):
-            bx = rd.aabb
-            c00, c10 = bx[:, [0, 1]], bx[:, [2, 1]]
-            c11, c01 = bx[:, [2, 3]], bx[:, [0, 3]]
-            p0 = np.concatenate([c00, c10, c11, c01])
-            p1 = np.concatenate([c10, c11, c01, c00])
-            segs.append(thick_segments(p0, p1, 1.0, AABB_COLOR, scale))
+            segs.append(self._rects(rd.aabb, 1.0, AABB_COLOR, scale))
         if overlays.velocities and len(rd.kind):
             dyn = np.nonzero(rd.kind == 0)[0]
             from_ = rd.center[dyn]
-            v = self._velocities[dyn] if getattr(self, "_velocities", None) is not None and \
-                len(self._velocities) == len(rd.kind) else np.zeros_like(from_)
+            v = velocities[dyn] if velocities is not None and len(velocities) == len(rd.kind) \
+                else np.zeros_like(from_)
             sp = np.hypot(v[:, 0], v[:, 1])
             keep = sp > 1e-3
             from_, v, sp = from_[keep], v[keep], sp[keep]
@@ -332,8 +335,15 @@ class Renderer:
         self.markers.upload(markers)
         self.last_upload_ms = (time.perf_counter() - t0) * 1e3
 
-    def set_velocities(self, v):
-        self._velocities = v
+    @staticmethod
+    def _rects(bx, width, color, scale):
+        """Outlines of axis-aligned rectangles (K, 4: min x, min y, max x, max y): 4 quads each."""
+        bx = np.asarray(bx, dtype=np.float64)
+        c00, c10 = bx[:, [0, 1]], bx[:, [2, 1]]
+        c11, c01 = bx[:, [2, 3]], bx[:, [0, 3]]
+        p0 = np.concatenate([c00, c10, c11, c01])
+        p1 = np.concatenate([c10, c11, c01, c00])
+        return thick_segments(p0, p1, width, color, scale)
 
     @staticmethod
     def _coils(ends, scale, color, width=2.0):

@@ -87,6 +87,7 @@ class Warmup:
                     for _ in range(3):
                         w.step()
                     w.render_data()
+                    w.quadtree_cells()
                     w.query_point((0.0, 0.5))
                     w.contacts()
             except Exception as exc:  # noqa: BLE001  (a broken mode must not stop the others)

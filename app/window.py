@@ -17,6 +17,7 @@ from pyglet.window import key as K
 from pyglet.window import mouse
 
 import physics
+from physics.scene import scene_metadata
 
 from .autosave import Autosaver
 from .camera import Camera
@@ -111,6 +112,9 @@ class Sandbox(pyglet.window.Window):
         self.info = {}
         self.rd_ids = np.zeros(0, np.int64)
         self._last_contacts = (0, 0.0)
+        self.quadtree = np.zeros((0, 4))       # the last quadtree cells drawn (overlay Q)
+        self.velocities = None                 # (N, 2) body velocities for the arrows (overlay V)
+        self._vel_key = None
         self._panning = None
         self._mouse_tool_active = False
         self.physics_lock = threading.Lock()
@@ -162,7 +166,7 @@ class Sandbox(pyglet.window.Window):
             self._caption = cap
             self.set_caption(cap)
 
-    def set_document(self, world, path):
+    def set_document(self, world, path, keep_camera=False):
         self.tool.cancel()
         self.tool_springs.clear()
         self.selection = []
@@ -171,7 +175,9 @@ class Sandbox(pyglet.window.Window):
         self.fault = None
         self.accumulator = 0.0
         self.stats.clear()
-        self.fit()
+        self.velocities = self._vel_key = None
+        if not keep_camera:
+            self.frame_scene()
         self.autosaver.set_origin(path)
         if not self.warmup.can_step(world.solver, world.integrator):
             self.warmup.prioritize(world.solver, world.integrator)
@@ -223,8 +229,10 @@ class Sandbox(pyglet.window.Window):
         loaded = self.doc.loaded
         path = self.doc.path
         self.tool.cancel()
+        meta = dict(scene_metadata(self.world))
         world = restore(loaded)
-        self.set_document(world, path)
+        scene_metadata(world).update(meta)    # name, description, camera: kept by a later save
+        self.set_document(world, path, keep_camera=True)
         self.notify("reset to the loaded state")
 
     def restore_autosave(self, path, origin):
@@ -381,14 +389,59 @@ class Sandbox(pyglet.window.Window):
         self.running = False
         self._step(1)
 
+    def free_area(self) -> tuple[float, float]:
+        """Pixels covered by panels at the left and right edges of the window: the scene is framed
+        in the area between them.  Uses the panels' rectangles from the last frame (they can be
+        moved), or their default places before the first frame with panels."""
+        if not self.show_ui:
+            return 0.0, 0.0
+        rects = [self.ui_rects.get(k) for k in ("main_window", "stats_window")]
+        if rects[0] is None:      # not drawn yet: the default layout
+            return float(PANEL_W + 16), float(STATS_W + 16) if self.panels.show_stats else 0.0
+        W = float(self.width)
+        left = right = 0.0
+        for r in rects:
+            if r is None or r[3] - r[1] < 60:      # absent, or collapsed to its title bar
+                continue
+            x0, _, x1, _ = r
+            if 0.5 * (x0 + x1) < 0.5 * W:
+                left = max(left, x1 + 8.0)
+            else:
+                right = max(right, W - x0 + 8.0)
+        return left, right
+
     def fit(self):
+        """Frame every body in the free area between the panels (F)."""
         rd = self.world.render_data()
         if not len(rd.aabb):
             return
-        lo = rd.aabb[:, :2].min(0)
-        hi = rd.aabb[:, 2:].max(0)
-        right = STATS_W + 16 if self.panels.show_stats else 0
-        self.camera.fit(lo, hi, avoid_left=PANEL_W + 16, avoid_right=right)
+        box = rd.aabb[np.all(np.isfinite(rd.aabb), axis=1)]
+        if not len(box):
+            return
+        left, right = self.free_area()
+        self.camera.fit(box[:, :2].min(0), box[:, 2:].max(0), avoid_left=left, avoid_right=right)
+
+    def scene_camera(self):
+        """The scene file's camera block ``{"center": [x, y], "zoom": px per m}``, or None."""
+        cam = scene_metadata(self.world).get("camera")
+        try:
+            center = np.asarray(cam["center"], dtype=np.float64).reshape(2)
+            zoom = float(cam["zoom"])
+        except (TypeError, KeyError, ValueError):
+            return None
+        if not (np.all(np.isfinite(center)) and math.isfinite(zoom) and zoom > 0):
+            return None
+        return center, zoom
+
+    def frame_scene(self):
+        """On opening a scene: its own camera if the file has one (centred in the free area),
+        otherwise fit the scene into the free area."""
+        cam = self.scene_camera()
+        if cam is None:
+            self.fit()
+        else:
+            left, right = self.free_area()
+            self.camera.look_at(cam[0], cam[1], avoid_left=left, avoid_right=right)
 
     # -- physics -------------------------------------------------------------------
     def _step(self, n) -> float:
@@ -427,8 +480,49 @@ class Sandbox(pyglet.window.Window):
             else:
                 self.accumulator -= steps * w.dt
             if steps:
+                if self.overlays.velocities:
+                    before = w.render_data()
+                    x0, ids0, t0 = before.center.copy(), before.ids.copy(), w.time
                 phys_ms = self._step(steps)
+                if self.overlays.velocities:
+                    # the arrows: each body's displacement over this frame's steps / the time
+                    # stepped, from the render arrays (no per-body Python handles)
+                    after = w.render_data()
+                    if w.time > t0 and np.array_equal(after.ids, ids0):
+                        self.velocities = (after.center - x0) / (w.time - t0)
+                        self._vel_key = ("stepped", self.doc.history.version, w.steps, len(ids0))
+                    else:
+                        self.velocities = None
         return phys_ms, steps
+
+    def body_velocities(self, rd):
+        """Velocities for the arrow overlay, in render-data order.  While running, the displacement
+        over the frame's steps (see ``simulate``); when nothing stepped (paused, or a body was just
+        added/removed), read through the body handles once per change of the world -- that is the
+        only case that touches Python objects per body, and it does not repeat every frame."""
+        w = self.world
+        if self._vel_key is not None and self._vel_key[0] == "stepped" and \
+                self._vel_key[1:] == (self.doc.history.version, w.steps, len(rd.ids)):
+            return self.velocities
+        key = ("handles", self.doc.history.version, w.steps, rd.ids.tobytes())
+        if key != self._vel_key or self.velocities is None:
+            self.velocities = np.array([b.velocity for b in w.bodies], dtype=np.float64).reshape(-1, 2)
+            self._vel_key = key
+        return self.velocities
+
+    def quadtree_cells(self):
+        """``world.quadtree_cells()`` for the overlay (Q).  It shares the broad phase's scratch
+        buffers with stepping, so it runs under the physics lock; while a background compile holds
+        the lock, the last cells are drawn again."""
+        if self.physics_lock.acquire(blocking=False):
+            try:
+                self.quadtree = self.world.quadtree_cells()
+            except Exception as exc:  # noqa: BLE001  (a debug overlay must not take the sandbox down)
+                self.overlays.quadtree = False
+                self.notify(f"quadtree overlay off: {exc}", error=True)
+            finally:
+                self.physics_lock.release()
+        return self.quadtree
 
     def sample_stats(self, phys_ms, steps):
         w = self.world
@@ -454,20 +548,20 @@ class Sandbox(pyglet.window.Window):
         if ready:
             if not self._fitted:
                 self._fitted = True
-                self.fit()
+                self.frame_scene()
             phys_ms, steps = self.simulate(real_dt)
             self.sample_stats(phys_ms, steps)
             self.update_hover()
             rd = self.world.render_data()
             self.rd_ids = rd.ids
             decor = self.decor()
-            if self.overlays.velocities:
-                self.renderer.set_velocities(np.array([b.velocity for b in self.world.bodies]).reshape(-1, 2))
+            velocities = self.body_velocities(rd) if self.overlays.velocities else None
+            quadtree = self.quadtree_cells() if self.overlays.quadtree else None
             spring_ids = np.array([s.id for s in self.world.springs], dtype=np.int64) \
                 if (decor.hidden_springs or decor.selected_springs) else None
             finite = np.all(np.isfinite(rd.vertices)) and np.all(np.isfinite(rd.center))
             if finite:
-                self.renderer.build(rd, self.camera, self.overlays, decor, spring_ids)
+                self.renderer.build(rd, self.camera, self.overlays, decor, spring_ids, quadtree, velocities)
             upload_ms = self.renderer.last_upload_ms
         t_draw = time.perf_counter()
         fw, fh = self.get_framebuffer_size()
@@ -553,7 +647,8 @@ class Sandbox(pyglet.window.Window):
                 sp = self.camera.to_screen(b.position)
                 bodies.append({"id": b.id, "name": b.name, "kind": b.kind, "position": b.position,
                                "screen": [float(sp[0]), float(self.height - sp[1])],
-                               "shape": b.shape.kind})
+                               "shape": b.shape.kind, "density": b.density,
+                               "vertices": 0 if isinstance(b.shape, physics.Circle) else len(b.shape.vertices)})
         st = {"frame": self.frame_no, "ready": self.warmup.ready, "warm_finished": self.warmup.finished,
               "warm_errors": self.warmup.errors, "running": self.running, "solver": w.solver,
               "n_bodies": len(w.bodies), "n_springs": len(w.springs), "bodies": bodies,
@@ -563,7 +658,11 @@ class Sandbox(pyglet.window.Window):
               "selection": [s.id for s in self.selection if s.alive], "tool": self.tool.name,
               "camera": {"center": self.camera.center.tolist(), "scale": self.camera.scale},
               "time": w.time, "steps": w.steps, "window": [self.width, self.height],
-              "ui_rects": self.ui_rects, "show_ui": self.show_ui}
+              "ui_rects": self.ui_rects, "show_ui": self.show_ui,
+              "springs": [{"id": s.id, "a": s.body_a.id, "b": None if s.body_b is None else s.body_b.id}
+                          for s in w.springs if s.id not in self.tool_springs] if len(self.rd_ids) <= 300 else [],
+              "overlays": dict(vars(self.overlays)), "quadtree_cells": len(self.quadtree),
+              "free_area": list(self.free_area()), "edit_error": self.panels.edit_error}
         tmp = self.status_path.with_suffix(".tmp")
         tmp.write_text(json.dumps(st))
         tmp.replace(self.status_path)
@@ -679,6 +778,8 @@ class Sandbox(pyglet.window.Window):
             self.overlays.contacts = not self.overlays.contacts
         elif symbol == K.B:
             self.overlays.aabbs = not self.overlays.aabbs
+        elif symbol == K.Q:
+            self.overlays.quadtree = not self.overlays.quadtree
         elif symbol == K.V:
             self.overlays.velocities = not self.overlays.velocities
         elif symbol == K.M:

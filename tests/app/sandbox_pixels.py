@@ -26,3 +26,17 @@ def red_text_pixels(img, x0, y0, x1, y1) -> int:
     a = img[y0:y1, x0:x1]
     r, g, b = a[..., 0], a[..., 1], a[..., 2]
     return int(np.count_nonzero((r > 200) & (g < 150) & (b < 150)))
+
+
+def yellow_pixels(img, x0, y0, x1, y1) -> int:
+    """Spring coils (#e8c45a)."""
+    a = img[max(0, y0):y1, max(0, x0):x1]
+    r, g, b = a[..., 0], a[..., 1], a[..., 2]
+    return int(np.count_nonzero((r > 180) & (g > 140) & (b < 130) & (r - b > 90)))
+
+
+def purple_pixels(img, x0, y0, x1, y1) -> int:
+    """Quadtree overlay outlines (#c890ff at alpha 0.45 over the background)."""
+    a = img[max(0, y0):y1, max(0, x0):x1]
+    r, g, b = a[..., 0], a[..., 1], a[..., 2]
+    return int(np.count_nonzero((b - g > 35) & (r - g > 12) & (b > 100)))
