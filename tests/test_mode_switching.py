@@ -46,6 +46,7 @@ def test_cycle_all_modes_every_second_during_pyramid():
     prev = centres(w)
     seconds = max(10, 2 * len(modes))
     last = None
+    intact = True  # until a seed mode has run, the pyramid stands and every kick is the switch's
     for sec in range(seconds):
         last = w.solver if sec else None
         w.solver = modes[sec % len(modes)]
@@ -57,9 +58,10 @@ def test_cycle_all_modes_every_second_during_pyramid():
             if k == 0:
                 kick = float(np.max(np.hypot(*((x - prev) - (prev - before)).T)))
                 print(f"switch to {w.solver} at t={w.time:.2f}: kick {kick:.3f} m/step")
-                if last in STACKING_MODES:
+                if last in STACKING_MODES and intact:
                     assert kick < 0.1, f"switching {last} -> {w.solver} at t={w.time:.2f} kicked a box by {kick:.3f} m/step"
             before, prev = prev, x
+        intact = intact and w.solver in STACKING_MODES
 
 
 @pytest.mark.slow
