@@ -47,48 +47,6 @@ def integrate_positions(B, n, h, DP, DQ, DC, DS):
         DS[i] = math.sin(DQ[i])
 
 
-SMALL_ROTATION = 0.05  # below this (rad per sub-step) sin/cos of the increment by series
-
-
-@kernel
-def integrate_positions_rot(B, n, h, DP, DC, DS):
-    """``integrate_positions`` keeping the rotation since the step began as (cos, sin) only.
-
-    B.q still advances by exactly h w; the displacement's (DC, DS) is composed
-    with the increment's rotation, whose sin and cos for |h w| < SMALL_ROTATION
-    come from their series to within rounding (first omitted terms < 1e-15)
-    instead of two libm calls per body and sub-step.
-    """
-    for i in range(n):
-        if B.kind[i] == STATIC or B.awake[i] == 0:
-            continue
-        w = B.w[i]
-        if abs(w * h) > MAX_ROTATION:
-            w = math.copysign(MAX_ROTATION / h, w)
-            B.w[i] = w
-        dx = h * B.v[i, 0]
-        dy = h * B.v[i, 1]
-        B.x[i, 0] += dx
-        B.x[i, 1] += dy
-        t = h * w
-        B.q[i] += t
-        DP[i, 0] += dx
-        DP[i, 1] += dy
-        if t == 0.0:
-            continue
-        if abs(t) < SMALL_ROTATION:
-            t2 = t * t
-            c = 1.0 - t2 * (0.5 - t2 * (1.0 / 24.0 - t2 * (1.0 / 720.0)))
-            s = t * (1.0 - t2 * (1.0 / 6.0 - t2 * (1.0 / 120.0 - t2 * (1.0 / 5040.0))))
-        else:
-            c = math.cos(t)
-            s = math.sin(t)
-        c0 = DC[i]
-        s0 = DS[i]
-        DC[i] = c0 * c - s0 * s
-        DS[i] = s0 * c + c0 * s
-
-
 @kernel
 def reset_displacements(n, DP, DQ, DC, DS):
     for i in range(n):

@@ -24,15 +24,18 @@ after the bodies moved by (dp, R(dq)) since the step began is
 from __future__ import annotations
 
 from .._jit import kernel
+from .soft_bodies import DCOS, DPX, DPY, DSIN, II, IM, VX, VY, W
 
 # per point p the fields start at p * PT
 RNA, RNB, RTA, RTB, MASS_N, MASS_T, SEP0, MU, VN0, MAXJ = range(10)
 PT = 10
-K12 = 2 * PT      # block solver: off-diagonal of K (k11, k22 are 1 / mass_n)
-DET = K12 + 1     # det K
-BLOCK = K12 + 2   # 1.0 when K is well conditioned (the block solver may run)
-RIGID = K12 + 3   # 1.0 when one of the bodies does not move (static/kinematic): stiffer rows
-NF = K12 + 4
+K11 = 2 * PT      # block solver: K = [[k11, k12], [k12, k22]] and 1 / det K
+K22 = K11 + 1
+K12 = K11 + 2
+INV_DET = K11 + 3
+BLOCK = K11 + 4   # 1.0 when K is well conditioned (the block solver may run)
+RIGID = K11 + 5   # 1.0 when one of the bodies does not move (static/kinematic): stiffer rows
+NF = K11 + 6
 
 MAX_CONDITION = 1000.0  # as block_normal.MAX_CONDITION: k11^2 / det above this, points (nearly) redundant
 
@@ -98,14 +101,16 @@ def prepare_rows(B, C, nc, stick_speed, R):
             k22 = im + iia * ra1 * ra1 + iib * rb1 * rb1
             k12 = im + iia * ra0 * ra1 + iib * rb0 * rb1
             det = k11 * k22 - k12 * k12
+            R[k, K11] = k11
+            R[k, K22] = k22
             R[k, K12] = k12
-            R[k, DET] = det
             if k11 * k11 < MAX_CONDITION * det:
                 R[k, BLOCK] = 1.0
+                R[k, INV_DET] = 1.0 / det
 
 
 @kernel
-def warm_start_rows(B, C, nc, R):
+def warm_start_rows(SB, C, nc, R):
     """Apply the accumulated impulses (normal and friction) of every point."""
     for k in range(nc):
         a = C.a[k]
@@ -124,18 +129,18 @@ def warm_start_rows(B, C, nc, R):
             py += jn * ny + jt * nx
             aa += jn * R[k, o + RNA] + jt * R[k, o + RTA]
             ab += jn * R[k, o + RNB] + jt * R[k, o + RTB]
-        ima = B.inv_m[a]
-        imb = B.inv_m[b]
-        B.v[a, 0] -= ima * px
-        B.v[a, 1] -= ima * py
-        B.w[a] -= B.inv_i[a] * aa
-        B.v[b, 0] += imb * px
-        B.v[b, 1] += imb * py
-        B.w[b] += B.inv_i[b] * ab
+        ima = SB[a, IM]
+        imb = SB[b, IM]
+        SB[a, VX] -= ima * px
+        SB[a, VY] -= ima * py
+        SB[a, W] -= SB[a, II] * aa
+        SB[b, VX] += imb * px
+        SB[b, VY] += imb * py
+        SB[b, W] += SB[b, II] * ab
 
 
 @kernel
-def solve_rows(B, C, nc, R, DP, DC, DS, inv_h, use_bias, soft_dyn, soft_static, push_speed, block, track):
+def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed, block, track):
     """One Gauss-Seidel pass over the manifolds: soft normal rows (>= 0), then friction.
 
     ``use_bias``: the biased pass (overlap pushed out softly); without it the
@@ -149,26 +154,26 @@ def solve_rows(B, C, nc, R, DP, DC, DS, inv_h, use_bias, soft_dyn, soft_static, 
         b = C.b[k]
         nx = C.normal[k, 0]
         ny = C.normal[k, 1]
-        ima = B.inv_m[a]
-        imb = B.inv_m[b]
-        iia = B.inv_i[a]
-        iib = B.inv_i[b]
-        vax = B.v[a, 0]
-        vay = B.v[a, 1]
-        wa = B.w[a]
-        vbx = B.v[b, 0]
-        vby = B.v[b, 1]
-        wb = B.w[b]
+        ima = SB[a, IM]
+        imb = SB[b, IM]
+        iia = SB[a, II]
+        iib = SB[b, II]
+        vax = SB[a, VX]
+        vay = SB[a, VY]
+        wa = SB[a, W]
+        vbx = SB[b, VX]
+        vby = SB[b, VY]
+        wb = SB[b, W]
         if R[k, RIGID] != 0.0:
             rate, mscale, iscale = soft_static
         else:
             rate, mscale, iscale = soft_dyn
         # displacement of b relative to a since the step began, along n
-        ddn = (DP[b, 0] - DP[a, 0]) * nx + (DP[b, 1] - DP[a, 1]) * ny
-        cam = DC[a] - 1.0
-        cbm = DC[b] - 1.0
-        sa = DS[a]
-        sb = DS[b]
+        ddn = (SB[b, DPX] - SB[a, DPX]) * nx + (SB[b, DPY] - SB[a, DPY]) * ny
+        cam = SB[a, DCOS] - 1.0
+        cbm = SB[b, DCOS] - 1.0
+        sa = SB[a, DSIN]
+        sb = SB[b, DSIN]
         cnt = C.count[k]
         # bias, mass scale and impulse scale of both normal rows in this pass
         bias0 = 0.0
@@ -200,11 +205,10 @@ def solve_rows(B, C, nc, R, DP, DC, DS, inv_h, use_bias, soft_dyn, soft_static, 
             rnb0 = R[k, RNB]
             rna1 = R[k, PT + RNA]
             rnb1 = R[k, PT + RNB]
-            im = ima + imb
-            k11 = im + iia * rna0 * rna0 + iib * rnb0 * rnb0
-            k22 = im + iia * rna1 * rna1 + iib * rnb1 * rnb1
+            k11 = R[k, K11]
+            k22 = R[k, K22]
             k12 = R[k, K12]
-            det = R[k, DET]
+            inv_det = R[k, INV_DET]
             old0 = C.jn[k, 0]
             old1 = C.jn[k, 1]
             dvn = (vbx - vax) * nx + (vby - vay) * ny
@@ -216,16 +220,16 @@ def solve_rows(B, C, nc, R, DP, DC, DS, inv_h, use_bias, soft_dyn, soft_static, 
             ms = ms0
             done = True
             # case 1: both points push
-            x0 = -ms * (k22 * g0 - k12 * g1) / det
-            x1 = -ms * (k11 * g1 - k12 * g0) / det
+            x0 = -ms * (k22 * g0 - k12 * g1) * inv_det
+            x1 = -ms * (k11 * g1 - k12 * g0) * inv_det
             if not (x0 >= 0.0 and x1 >= 0.0):
                 # case 2: only point 0 pushes, point 1 separates
-                x0 = -ms * g0 / k11
+                x0 = -ms * g0 * R[k, MASS_N]
                 x1 = 0.0
                 if not (x0 >= 0.0 and g1 + k12 * x0 >= 0.0):
                     # case 3: only point 1
                     x0 = 0.0
-                    x1 = -ms * g1 / k22
+                    x1 = -ms * g1 * R[k, PT + MASS_N]
                     if not (x1 >= 0.0 and g0 + k12 * x1 >= 0.0):
                         # case 4: neither
                         x1 = 0.0
@@ -284,16 +288,16 @@ def solve_rows(B, C, nc, R, DP, DC, DS, inv_h, use_bias, soft_dyn, soft_static, 
             vbx -= imb * j * ny
             vby += imb * j * nx
             wb += iib * j * rtb
-        B.v[a, 0] = vax
-        B.v[a, 1] = vay
-        B.w[a] = wa
-        B.v[b, 0] = vbx
-        B.v[b, 1] = vby
-        B.w[b] = wb
+        SB[a, VX] = vax
+        SB[a, VY] = vay
+        SB[a, W] = wa
+        SB[b, VX] = vbx
+        SB[b, VY] = vby
+        SB[b, W] = wb
 
 
 @kernel
-def restitution_rows(B, C, nc, R, threshold):
+def restitution_rows(SB, C, nc, R, threshold):
     """Newton's law v_n' = -e v_n (seed eq. 13) for points that hit faster than ``threshold``
     and pushed this step (a speculative point never reached does not bounce)."""
     for k in range(nc):
@@ -304,8 +308,8 @@ def restitution_rows(B, C, nc, R, threshold):
         b = C.b[k]
         nx = C.normal[k, 0]
         ny = C.normal[k, 1]
-        ima = B.inv_m[a]
-        imb = B.inv_m[b]
+        ima = SB[a, IM]
+        imb = SB[b, IM]
         for p in range(C.count[k]):
             o = p * PT
             vn0 = R[k, o + VN0]
@@ -313,14 +317,14 @@ def restitution_rows(B, C, nc, R, threshold):
                 continue
             rna = R[k, o + RNA]
             rnb = R[k, o + RNB]
-            vn = (B.v[b, 0] - B.v[a, 0]) * nx + (B.v[b, 1] - B.v[a, 1]) * ny + B.w[b] * rnb - B.w[a] * rna
+            vn = (SB[b, VX] - SB[a, VX]) * nx + (SB[b, VY] - SB[a, VY]) * ny + SB[b, W] * rnb - SB[a, W] * rna
             old = C.jn[k, p]
             new = max(old - R[k, o + MASS_N] * (vn + e * vn0), 0.0)
             C.jn[k, p] = new
             j = new - old
-            B.v[a, 0] -= ima * j * nx
-            B.v[a, 1] -= ima * j * ny
-            B.w[a] -= B.inv_i[a] * j * rna
-            B.v[b, 0] += imb * j * nx
-            B.v[b, 1] += imb * j * ny
-            B.w[b] += B.inv_i[b] * j * rnb
+            SB[a, VX] -= ima * j * nx
+            SB[a, VY] -= ima * j * ny
+            SB[a, W] -= SB[a, II] * j * rna
+            SB[b, VX] += imb * j * nx
+            SB[b, VY] += imb * j * ny
+            SB[b, W] += SB[b, II] * j * rnb

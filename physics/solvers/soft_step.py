@@ -14,7 +14,7 @@ import numpy as np
 from .._jit import kernel
 from ..settings import Setting, declare
 from . import SolverMode
-from .motion import integrate_positions_rot, integrate_velocities
+from .soft_bodies import NB, gather_bodies, integrate_positions, integrate_velocities, load_velocities, store_velocities
 from .soft_contact import softness
 from .soft_rows import NF, prepare_rows, restitution_rows, solve_rows, warm_start_rows
 from .soft_springs import solve_springs
@@ -31,7 +31,7 @@ def _zero_impulses(C, nc):
 
 @kernel
 def soft_step(B, n, C, nc, S, ns, gx, gy, dt, substeps, iterations, hertz, zeta, push, warm, relax,
-              rest_threshold, stick_speed, block, R, DP, DC, DS):
+              rest_threshold, stick_speed, block, R, SB):
     h = dt / substeps
     inv_h = 1.0 / h
     # contacts against static bodies are twice as stiff (they carry the whole load); both are
@@ -43,23 +43,21 @@ def soft_step(B, n, C, nc, S, ns, gx, gy, dt, substeps, iterations, hertz, zeta,
     prepare_rows(B, C, nc, stick_speed, R)
     if not warm:
         _zero_impulses(C, nc)
-    for i in range(n):  # displacement since the step began: none yet
-        DP[i, 0] = 0.0
-        DP[i, 1] = 0.0
-        DC[i] = 1.0
-        DS[i] = 0.0
+    gather_bodies(B, n, SB)
     for _ in range(substeps):
-        integrate_velocities(B, n, gx, gy, h)
-        if ns > 0:
+        integrate_velocities(B, n, SB, gx, gy, h)
+        if ns > 0:  # the spring solver works on the body table
+            store_velocities(B, n, SB)
             solve_springs(B, S, ns, h)
-        warm_start_rows(B, C, nc, R)
+            load_velocities(B, n, SB)
+        warm_start_rows(SB, C, nc, R)
         for it in range(iterations):
-            solve_rows(B, C, nc, R, DP, DC, DS, inv_h, True, soft_dyn, soft_static, push, block,
-                       it == iterations - 1)
-        integrate_positions_rot(B, n, h, DP, DC, DS)
+            solve_rows(SB, C, nc, R, inv_h, True, soft_dyn, soft_static, push, block, it == iterations - 1)
+        integrate_positions(B, n, SB, h)
         if relax:
-            solve_rows(B, C, nc, R, DP, DC, DS, inv_h, False, soft_dyn, soft_static, push, block, True)
-    restitution_rows(B, C, nc, R, rest_threshold)
+            solve_rows(SB, C, nc, R, inv_h, False, soft_dyn, soft_static, push, block, True)
+    restitution_rows(SB, C, nc, R, rest_threshold)
+    store_velocities(B, n, SB)
 
 
 class SoftStep(SolverMode):
@@ -82,14 +80,12 @@ class SoftStep(SolverMode):
         self._alloc(64)
 
     def _alloc(self, cap):
-        self.DP = np.zeros((cap, 2))
-        self.DC = np.ones(cap)
-        self.DS = np.zeros(cap)
+        self.SB = np.zeros((cap, NB))
         self.R = np.zeros((64, NF))
 
     def step(self, world, dt, p):
         n = world._bodies.n
-        if n > len(self.DC):
+        if n > len(self.SB):
             self._alloc(2 * n)
         c = world._contacts
         if c.n > len(self.R):
@@ -99,7 +95,7 @@ class SoftStep(SolverMode):
         soft_step(world._bodies.view, n, c.cur, c.n, world._springs.view, world._springs.n,
                   g[0], g[1], dt, p["substeps"], p["iterations"], p["contact_hertz"], p["damping_ratio"],
                   p["push_out_speed"], p["warm_starting"], p["relax"], p["restitution_threshold"],
-                  p["stick_speed"], p["block_solver"], self.R, self.DP, self.DC, self.DS)
+                  p["stick_speed"], p["block_solver"], self.R, self.SB)
 
     def stages(self, world):
         out = ["integrate:symplectic_euler (sub-stepped)", "contacts:soft"]
