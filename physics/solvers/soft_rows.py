@@ -27,15 +27,17 @@ from .._jit import kernel
 from .soft_bodies import DCOS, DPX, DPY, DSIN, II, IM, VX, VY, W
 
 # per point p the fields start at p * PT
-RNA, RNB, RTA, RTB, MASS_N, MASS_T, SEP0, MU, VN0, MAXJ = range(10)
-PT = 10
+RNA, RNB, RTA, RTB, MASS_N, MASS_T, SEP0, MU, VN0, MAXJ, JN, JT = range(12)
+PT = 12
 K11 = 2 * PT      # block solver: K = [[k11, k12], [k12, k22]] and 1 / det K
 K22 = K11 + 1
 K12 = K11 + 2
 INV_DET = K11 + 3
 BLOCK = K11 + 4   # 1.0 when K is well conditioned (the block solver may run)
 RIGID = K11 + 5   # 1.0 when one of the bodies does not move (static/kinematic): stiffer rows
-NF = K11 + 6
+NX = K11 + 6      # the normal
+NY = K11 + 7
+NF = K11 + 8
 
 MAX_CONDITION = 1000.0  # as block_normal.MAX_CONDITION: k11^2 / det above this, points (nearly) redundant
 
@@ -89,6 +91,10 @@ def prepare_rows(B, C, nc, stick_speed, R):
             # Coulomb (seed eq. 23): static coefficient while sticking, dynamic once sliding
             R[k, o + MU] = C.mu_s[k] if abs(vt) <= stick_speed else C.mu_d[k]
             R[k, o + MAXJ] = 0.0
+            R[k, o + JN] = C.jn[k, p]
+            R[k, o + JT] = C.jt[k, p]
+        R[k, NX] = nx
+        R[k, NY] = ny
         R[k, RIGID] = 1.0 if (ima == 0.0 or imb == 0.0) else 0.0
         R[k, BLOCK] = 0.0
         if cnt == 2:
@@ -115,16 +121,16 @@ def warm_start_rows(SB, C, nc, R):
     for k in range(nc):
         a = C.a[k]
         b = C.b[k]
-        nx = C.normal[k, 0]
-        ny = C.normal[k, 1]
+        nx = R[k, NX]
+        ny = R[k, NY]
         px = 0.0
         py = 0.0
         aa = 0.0
         ab = 0.0
         for p in range(C.count[k]):
             o = p * PT
-            jn = C.jn[k, p]
-            jt = C.jt[k, p]
+            jn = R[k, o + JN]
+            jt = R[k, o + JT]
             px += jn * nx - jt * ny
             py += jn * ny + jt * nx
             aa += jn * R[k, o + RNA] + jt * R[k, o + RTA]
@@ -152,8 +158,8 @@ def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed,
     for k in range(nc):
         a = C.a[k]
         b = C.b[k]
-        nx = C.normal[k, 0]
-        ny = C.normal[k, 1]
+        nx = R[k, NX]
+        ny = R[k, NY]
         ima = SB[a, IM]
         imb = SB[b, IM]
         iia = SB[a, II]
@@ -209,8 +215,8 @@ def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed,
             k22 = R[k, K22]
             k12 = R[k, K12]
             inv_det = R[k, INV_DET]
-            old0 = C.jn[k, 0]
-            old1 = C.jn[k, 1]
+            old0 = R[k, JN]
+            old1 = R[k, PT + JN]
             dvn = (vbx - vax) * nx + (vby - vay) * ny
             v0 = dvn + wb * rnb0 - wa * rna0
             v1 = dvn + wb * rnb1 - wa * rna1
@@ -236,8 +242,8 @@ def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed,
                         if not (g0 >= 0.0 and g1 >= 0.0):
                             done = False
             if done:
-                C.jn[k, 0] = x0
-                C.jn[k, 1] = x1
+                R[k, JN] = x0
+                R[k, PT + JN] = x1
                 d0 = x0 - old0
                 d1 = x1 - old1
                 d = d0 + d1
@@ -257,10 +263,10 @@ def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed,
                 else:
                     bias, ms, isc = bias1, ms1, is1
                 vn = (vbx - vax) * nx + (vby - vay) * ny + wb * rnb - wa * rna
-                old = C.jn[k, p]
+                old = R[k, o + JN]
                 j = -R[k, o + MASS_N] * ms * (vn + bias) - isc * old
                 new = max(old + j, 0.0)
-                C.jn[k, p] = new
+                R[k, o + JN] = new
                 j = new - old
                 vax -= ima * j * nx
                 vay -= ima * j * ny
@@ -272,14 +278,14 @@ def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed,
             o = p * PT
             rta = R[k, o + RTA]
             rtb = R[k, o + RTB]
-            jn = C.jn[k, p]
+            jn = R[k, o + JN]
             if track and jn > R[k, o + MAXJ]:
                 R[k, o + MAXJ] = jn
             vt = -(vbx - vax) * ny + (vby - vay) * nx + wb * rtb - wa * rta
             limit = R[k, o + MU] * jn
-            old = C.jt[k, p]
+            old = R[k, o + JT]
             new = min(max(old - R[k, o + MASS_T] * vt, -limit), limit)
-            C.jt[k, p] = new
+            R[k, o + JT] = new
             j = new - old
             # impulse j along t = (-n_y, n_x)
             vax += ima * j * ny
@@ -297,34 +303,43 @@ def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed,
 
 
 @kernel
-def restitution_rows(SB, C, nc, R, threshold):
-    """Newton's law v_n' = -e v_n (seed eq. 13) for points that hit faster than ``threshold``
-    and pushed this step (a speculative point never reached does not bounce)."""
+def finish_rows(SB, C, nc, R, threshold):
+    """Restitution, then the accumulated impulses back into the manifolds (warm start).
+
+    Newton's law v_n' = -e v_n (seed eq. 13) for points that hit faster than
+    ``threshold`` and pushed this step (a speculative point never reached does not bounce)."""
     for k in range(nc):
         e = C.e[k]
-        if e == 0.0:
-            continue
-        a = C.a[k]
-        b = C.b[k]
-        nx = C.normal[k, 0]
-        ny = C.normal[k, 1]
-        ima = SB[a, IM]
-        imb = SB[b, IM]
+        if e != 0.0:
+            _restitution(SB, C, k, R, threshold, e)
         for p in range(C.count[k]):
-            o = p * PT
-            vn0 = R[k, o + VN0]
-            if vn0 > -threshold or R[k, o + MAXJ] == 0.0:
-                continue
-            rna = R[k, o + RNA]
-            rnb = R[k, o + RNB]
-            vn = (SB[b, VX] - SB[a, VX]) * nx + (SB[b, VY] - SB[a, VY]) * ny + SB[b, W] * rnb - SB[a, W] * rna
-            old = C.jn[k, p]
-            new = max(old - R[k, o + MASS_N] * (vn + e * vn0), 0.0)
-            C.jn[k, p] = new
-            j = new - old
-            SB[a, VX] -= ima * j * nx
-            SB[a, VY] -= ima * j * ny
-            SB[a, W] -= SB[a, II] * j * rna
-            SB[b, VX] += imb * j * nx
-            SB[b, VY] += imb * j * ny
-            SB[b, W] += SB[b, II] * j * rnb
+            C.jn[k, p] = R[k, p * PT + JN]
+            C.jt[k, p] = R[k, p * PT + JT]
+
+
+@kernel
+def _restitution(SB, C, k, R, threshold, e):
+    a = C.a[k]
+    b = C.b[k]
+    nx = R[k, NX]
+    ny = R[k, NY]
+    ima = SB[a, IM]
+    imb = SB[b, IM]
+    for p in range(C.count[k]):
+        o = p * PT
+        vn0 = R[k, o + VN0]
+        if vn0 > -threshold or R[k, o + MAXJ] == 0.0:
+            continue
+        rna = R[k, o + RNA]
+        rnb = R[k, o + RNB]
+        vn = (SB[b, VX] - SB[a, VX]) * nx + (SB[b, VY] - SB[a, VY]) * ny + SB[b, W] * rnb - SB[a, W] * rna
+        old = R[k, o + JN]
+        new = max(old - R[k, o + MASS_N] * (vn + e * vn0), 0.0)
+        R[k, o + JN] = new
+        j = new - old
+        SB[a, VX] -= ima * j * nx
+        SB[a, VY] -= ima * j * ny
+        SB[a, W] -= SB[a, II] * j * rna
+        SB[b, VX] += imb * j * nx
+        SB[b, VY] += imb * j * ny
+        SB[b, W] += SB[b, II] * j * rnb

@@ -16,7 +16,7 @@ from ..settings import Setting, declare
 from . import SolverMode
 from .soft_bodies import NB, gather_bodies, integrate_positions, integrate_velocities, load_velocities, store_velocities
 from .soft_contact import softness
-from .soft_rows import NF, prepare_rows, restitution_rows, solve_rows, warm_start_rows
+from .soft_rows import NF, finish_rows, prepare_rows, solve_rows, warm_start_rows
 from .soft_springs import solve_springs
 from .warm_handoff import adopt
 
@@ -40,9 +40,9 @@ def soft_step(B, n, C, nc, S, ns, gx, gy, dt, substeps, iterations, hertz, zeta,
     cap = 0.25 * inv_h
     soft_dyn = softness(min(hertz, cap), zeta, h)
     soft_static = softness(min(2.0 * hertz, cap), zeta, h)
-    prepare_rows(B, C, nc, stick_speed, R)
     if not warm:
         _zero_impulses(C, nc)
+    prepare_rows(B, C, nc, stick_speed, R)
     gather_bodies(B, n, SB)
     for _ in range(substeps):
         integrate_velocities(B, n, SB, gx, gy, h)
@@ -56,7 +56,7 @@ def soft_step(B, n, C, nc, S, ns, gx, gy, dt, substeps, iterations, hertz, zeta,
         integrate_positions(B, n, SB, h)
         if relax:
             solve_rows(SB, C, nc, R, inv_h, False, soft_dyn, soft_static, push, block, True)
-    restitution_rows(SB, C, nc, R, rest_threshold)
+    finish_rows(SB, C, nc, R, rest_threshold)
     store_velocities(B, n, SB)
 
 
