@@ -170,6 +170,11 @@ def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed,
         vbx = SB[b, VX]
         vby = SB[b, VY]
         wb = SB[b, W]
+        # the linear response of each body to a unit impulse along n
+        anx = ima * nx
+        any_ = ima * ny
+        bnx = imb * nx
+        bny = imb * ny
         if R[k, RIGID] != 0.0:
             rate, mscale, iscale = soft_static
         else:
@@ -247,11 +252,11 @@ def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed,
                 d0 = x0 - old0
                 d1 = x1 - old1
                 d = d0 + d1
-                vax -= ima * d * nx
-                vay -= ima * d * ny
+                vax -= d * anx
+                vay -= d * any_
                 wa -= iia * (d0 * rna0 + d1 * rna1)
-                vbx += imb * d * nx
-                vby += imb * d * ny
+                vbx += d * bnx
+                vby += d * bny
                 wb += iib * (d0 * rnb0 + d1 * rnb1)
         if not done:
             for p in range(cnt):
@@ -268,11 +273,11 @@ def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed,
                 new = max(old + j, 0.0)
                 R[k, o + JN] = new
                 j = new - old
-                vax -= ima * j * nx
-                vay -= ima * j * ny
+                vax -= j * anx
+                vay -= j * any_
                 wa -= iia * j * rna
-                vbx += imb * j * nx
-                vby += imb * j * ny
+                vbx += j * bnx
+                vby += j * bny
                 wb += iib * j * rnb
         for p in range(cnt):
             o = p * PT
@@ -288,11 +293,11 @@ def solve_rows(SB, C, nc, R, inv_h, use_bias, soft_dyn, soft_static, push_speed,
             R[k, o + JT] = new
             j = new - old
             # impulse j along t = (-n_y, n_x)
-            vax += ima * j * ny
-            vay -= ima * j * nx
+            vax += j * any_
+            vay -= j * anx
             wa -= iia * j * rta
-            vbx -= imb * j * ny
-            vby += imb * j * nx
+            vbx -= j * bny
+            vby += j * bnx
             wb += iib * j * rtb
         SB[a, VX] = vax
         SB[a, VY] = vay
