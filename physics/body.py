@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from .store import DYNAMIC, KIND_NAMES, KINDS
+from .store import KIND_NAMES, KINDS
 
 
 def finite_vec(value, field: str) -> np.ndarray:
@@ -194,7 +194,7 @@ class Body:
         s = self._s
         self._B.kind[s] = KINDS[value]
         self._world._set_mass(s, self.shape, float(self._B.density[s]))
-        if KINDS[value] != DYNAMIC and value == "static":
+        if value == "static":  # a static body never moves
             self._B.v[s] = 0.0
             self._B.w[s] = 0.0
         self._world._touched(s)
