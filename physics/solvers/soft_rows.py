@@ -1,6 +1,6 @@
 """The contact rows of ``soft_step``, laid out for its inner loop.
 
-The model is that of soft_contact.py (soft normal rows with bias, relax,
+The model is the soft contact of soft_contact.py (soft normal rows with bias, relax,
 Coulomb friction, the 2x2 block solver of block_normal.py, restitution); this
 module only arranges the work so that a sub-step pass is cheap:
 
