@@ -75,3 +75,12 @@ def prepare_contacts(B, C, nc, stick_speed):
             vt = -dvx * ny + dvy * nx
             # Coulomb (seed eq. 23): static coefficient while sticking, dynamic once sliding
             C.mu[k, p] = C.mu_s[k] if math.fabs(vt) <= stick_speed else C.mu_d[k]
+
+
+@kernel
+def zero_impulses(C, nc):
+    """Forget the accumulated impulses (warm starting switched off)."""
+    for k in range(nc):
+        for p in range(2):
+            C.jn[k, p] = 0.0
+            C.jt[k, p] = 0.0

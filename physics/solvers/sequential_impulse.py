@@ -25,7 +25,7 @@ import numpy as np
 from .._jit import kernel
 from ..settings import Setting, declare
 from . import SolverMode
-from .contact_prep import prepare_contacts
+from .contact_prep import prepare_contacts, zero_impulses
 from .motion import integrate_positions, integrate_velocities, reset_displacements
 from .si_contact import contact_bias, solve_velocities
 from .soft_contact import apply_restitution, warm_start
@@ -41,20 +41,12 @@ MAX_PUSH = 10.0
 
 
 @kernel
-def _zero_impulses(C, nc):
-    for k in range(nc):
-        for p in range(2):
-            C.jn[k, p] = 0.0
-            C.jt[k, p] = 0.0
-
-
-@kernel
 def si_step(B, n, C, nc, S, ns, gx, gy, dt, vel_iters, pos_iters, warm, beta, slop, correction,
             rest_threshold, stick_speed, block, DP, DQ, DC, DS, VP, WP, JP):
     inv_dt = 1.0 / dt
     prepare_contacts(B, C, nc, stick_speed)
     if not warm:
-        _zero_impulses(C, nc)
+        zero_impulses(C, nc)
     integrate_velocities(B, n, gx, gy, dt)
     if ns > 0:
         solve_springs(B, S, ns, dt)

@@ -14,19 +14,12 @@ import numpy as np
 from .._jit import kernel
 from ..settings import Setting, declare
 from . import SolverMode
+from .contact_prep import zero_impulses
 from .soft_bodies import NB, gather_bodies, integrate_positions, integrate_velocities, load_velocities, store_velocities
 from .soft_contact import softness
 from .soft_rows import NF, finish_rows, prepare_rows, solve_rows, warm_start_rows
 from .soft_springs import solve_springs
 from .warm_handoff import adopt
-
-
-@kernel
-def _zero_impulses(C, nc):
-    for k in range(nc):
-        for p in range(2):
-            C.jn[k, p] = 0.0
-            C.jt[k, p] = 0.0
 
 
 @kernel
@@ -41,7 +34,7 @@ def soft_step(B, n, C, nc, S, ns, gx, gy, dt, substeps, iterations, hertz, zeta,
     soft_dyn = softness(min(hertz, cap), zeta, h)
     soft_static = softness(min(2.0 * hertz, cap), zeta, h)
     if not warm:
-        _zero_impulses(C, nc)
+        zero_impulses(C, nc)
     prepare_rows(B, C, nc, stick_speed, R)
     gather_bodies(B, n, SB)
     for _ in range(substeps):
