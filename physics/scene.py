@@ -12,7 +12,6 @@ the schema is physics/scene_schema.py.
 from __future__ import annotations
 
 import os
-import weakref
 
 from . import scene_schema as fmt
 from .errors import SceneError
@@ -22,13 +21,10 @@ from .scene_json import dumps, parse, read_text, write_atomic
 
 __all__ = ["load_scene", "save_scene", "scene_from_dict", "scene_to_dict", "scene_metadata", "read_scene"]
 
-# world -> {"name", "description", "camera"}: kept beside the World, which knows nothing of files
-_META: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-
-
 def scene_metadata(world) -> dict:
-    """The name, description and camera a world was loaded with (edit it to change what is saved)."""
-    return _META.setdefault(world, {})
+    """The name, description and camera a world was loaded with (``world.metadata``; edit it to
+    change what is saved)."""
+    return world.metadata
 
 
 def read_scene(path) -> dict:

@@ -24,6 +24,9 @@ INTEGRATORS = ("euler", "symplectic_euler", "rk4")
 NARROWPHASES = ("sat", "gjk")
 BROADPHASES = ("auto", "sweep", "quadtree", "brute")
 
+STATE_DTYPE = np.dtype([("id", np.int64), ("position", np.float64, (2,)), ("angle", np.float64),
+                        ("velocity", np.float64, (2,)), ("angular_velocity", np.float64), ("awake", np.bool_)])
+
 Contact = namedtuple("Contact", "body_a body_b points normal depth")
 RenderData = namedtuple(
     "RenderData",
@@ -55,6 +58,9 @@ class World:
         self._spring_name_of: dict[int, str] = {}
         self._mode_settings: dict[str, dict] = {}
         self._pipeline = Pipeline()
+        #: what the scene file this world came from says of itself (name, description, camera);
+        #: saving writes it back.  Edit it to change what is saved.
+        self.metadata: dict = {}
         self.time = 0.0
         self.steps = 0
         self.fault: SimulationError | None = None
@@ -457,6 +463,29 @@ class World:
             if np.all(np.einsum("ij,ij->i", p - V.world[a:a + k], V.wnormal[a:a + k]) <= 0):
                 return self._handles[int(B.id[s])]
         return None
+
+    def state(self) -> np.ndarray:
+        """Every body's state as a read-only numpy structured array (a copy), in body order.
+
+        Fields: ``id`` (int64), ``position`` (2: the body origin, m), ``angle`` (rad),
+        ``velocity`` (2: of the centre of mass, m/s), ``angular_velocity`` (rad/s), ``awake``
+        (bool).  ``world.state()["position"]`` equals ``[b.position for b in world.bodies]``.
+        """
+        n = self._bodies.n
+        B = self._bodies.view
+        out = np.zeros(n, STATE_DTYPE)
+        q = B.q[:n]
+        c, s = np.cos(q), np.sin(q)
+        com = B.com[:n]
+        out["id"] = B.id[:n]
+        out["position"][:, 0] = B.x[:n, 0] - (c * com[:, 0] - s * com[:, 1])
+        out["position"][:, 1] = B.x[:n, 1] - (s * com[:, 0] + c * com[:, 1])
+        out["angle"] = q
+        out["velocity"] = B.v[:n]
+        out["angular_velocity"] = B.w[:n]
+        out["awake"] = B.awake[:n] != 0
+        out.setflags(write=False)
+        return out
 
     def kinetic_energy(self) -> float:
         n = self._bodies.n

@@ -16,6 +16,7 @@ import pytest
 import physics
 from physics.scene import load_scene, scene_metadata
 
+from end_states import digest, load_record
 from test_scene import assert_same_world
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -135,6 +136,9 @@ def test_scene_runs_600_steps_in_every_mode(name, solver):
     B = w._bodies.view
     for field in ("x", "q", "v", "w"):
         assert np.all(np.isfinite(getattr(B, field)[:n])), field
+    # behaviour unchanged: the end state is the recorded one, bit for bit (tests/end_states.py)
+    assert digest(w) == load_record()[f"{name}/{solver}"], \
+        f"{name}/{solver}: the 600-step end state changed; if deliberate, re-record (python -m tests.end_states)"
 
 
 # -- model only what a scene requires ---------------------------------------------
