@@ -24,10 +24,11 @@ import numpy as np
 
 from ._jit import kernel
 from .forces import eval_forces
+from .options import INTEGRATORS
 from .solvers.penalty_force import update_stick
 from .store import DYNAMIC, KINEMATIC
 
-METHODS = {"euler": 0, "symplectic_euler": 1, "rk4": 2}
+METHODS = {name: INTEGRATORS.index(name) for name in INTEGRATORS}  # euler 0, symplectic 1, rk4 2
 # largest omega h allowed per sub-step.  Symplectic Euler is stable below 2, RK4
 # below 2.83 (half of each, for damping and accuracy).  Explicit Euler is never stable
 # for an undamped spring; 0.2 bounds its energy gain to 4 % per sub-step.

@@ -10,7 +10,7 @@ from collections import namedtuple
 
 import numpy as np
 
-from . import solvers
+from . import options, solvers
 from .body import Body, checked_density, finite_num, finite_vec, friction_pair
 from .contacts import ContactBuffer
 from .errors import SimulationError
@@ -20,9 +20,6 @@ from .spring import Spring
 from .store import (BODY_FIELDS, CIRCLE, DYNAMIC, KINDS, POLYGON, SPRING_FIELDS, STATIC, Bodies, Springs,
                     Table, VertexPool)
 
-INTEGRATORS = ("euler", "symplectic_euler", "rk4")
-NARROWPHASES = ("sat", "gjk")
-BROADPHASES = ("auto", "sweep", "quadtree", "brute")
 
 STATE_DTYPE = np.dtype([("id", np.int64), ("position", np.float64, (2,)), ("angle", np.float64),
                         ("velocity", np.float64, (2,)), ("angular_velocity", np.float64), ("awake", np.bool_)])
@@ -134,8 +131,7 @@ class World:
 
     @integrator.setter
     def integrator(self, name):
-        if name not in INTEGRATORS:
-            raise ValueError(f"unknown integrator '{name}'; choose one of {list(INTEGRATORS)}")
+        options.code(options.INTEGRATORS, name, "integrator")
         self._integrator = name
 
     @property
@@ -144,8 +140,7 @@ class World:
 
     @broadphase.setter
     def broadphase(self, name):
-        if name not in BROADPHASES:
-            raise ValueError(f"unknown broad phase '{name}'; choose one of {list(BROADPHASES)}")
+        options.code(options.BROADPHASES, name, "broad phase")
         self._broadphase = name
 
     @property
@@ -154,8 +149,7 @@ class World:
 
     @narrowphase.setter
     def narrowphase(self, name):
-        if name not in NARROWPHASES:
-            raise ValueError(f"unknown narrow phase '{name}'; choose one of {list(NARROWPHASES)}")
+        options.code(options.NARROWPHASES, name, "narrow phase")
         self._narrowphase = name
 
     @property

@@ -10,12 +10,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..options import BROADPHASES
 from .brute import brute_pairs
 from .quadtree import build as _build_quadtree
 from .quadtree import quadtree_pairs
 from .sweep import sweep_pairs
 
-METHODS = ("auto", "sweep", "quadtree", "brute")
+METHODS = BROADPHASES
 
 # "auto" uses brute force below this many bodies and sweep from here on.
 # Measured with `python -m bench.collision` (random boxes and pyramids, 2-core

@@ -11,12 +11,14 @@ from __future__ import annotations
 import numpy as np
 
 from .._jit import kernel
+from ..options import NARROWPHASES
 from .epa import penetration
 from .manifold import polygon_manifold, reference_from_normal
 from .sat import choose_reference, max_separation
 
 SAT, GJK = 0, 1
-METHODS = {"sat": SAT, "gjk": GJK}
+METHODS = {name: NARROWPHASES.index(name) for name in NARROWPHASES}
+assert METHODS == {"sat": SAT, "gjk": GJK}
 
 
 @kernel(inline="always")

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import importlib
 
+from ..options import SOLVERS
 from ..settings import Setting
 
 
@@ -39,6 +40,7 @@ _REGISTRY = {
     "penalty": "physics.solvers.penalty:PenaltyMode",
     "hybrid": "physics.solvers.hybrid:HybridMode",
 }
+assert tuple(_REGISTRY) == SOLVERS, "physics/options.py names the modes"
 _CACHE: dict[str, SolverMode] = {}
 
 
