@@ -1,4 +1,4 @@
-"""``python -m bench``: the benchmark suite (see bench/run.py)."""
-from .run import main
+"""``python -m bench``: the benchmark suite (see bench/cli.py)."""
+from .cli import main
 
 raise SystemExit(main())

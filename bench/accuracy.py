@@ -1,6 +1,6 @@
 """Accuracy scenarios with known answers, run the same way in every engine.
 
-Each scenario takes ``make(desc) -> refs.Sim`` (so one function serves
+Each scenario takes ``make(desc) -> Sim`` (bench/engines) (so one function serves
 Stelkropp in any mode and setting, pymunk and pybox2d) and returns a list of
 metrics ``{"metric", "value", "expected", "error", "unit"}``; ``error`` is
 what the plots and the pareto fronts use (relative where the answer is
@@ -29,20 +29,21 @@ import math
 
 import numpy as np
 
-from . import refs
+from . import desc as _d
+from .metrics import penetration
 
 G = 10.0
 
 
 def _desc(name, bodies, springs=(), gravity=(0.0, -G), dt=1 / 60):
-    return refs._desc(name, name, bodies, springs, gravity=gravity, dt=dt)
+    return _d.make_desc(name, name, bodies, springs, gravity=gravity, dt=dt)
 
 
 # -- spring: period and energy ------------------------------------------------------------
 def spring(make, dt=1 / 60, k=100.0, m=1.0, amplitude=0.5, periods=10):
     side = 0.5
     dens = m / (side * side)
-    d = _desc("spring", [refs.box(side, side, 1.0 + amplitude, 0.0, density=dens, friction=0.0, name="bob")],
+    d = _desc("spring", [_d.box(side, side, 1.0 + amplitude, 0.0, density=dens, friction=0.0, name="bob")],
               [{"name": "s", "a": "bob", "b": None, "anchor_a": [0, 0], "anchor_b": [0, 0],
                 "stiffness": k, "damping": 0.0, "rest_length": 1.0}], gravity=(0.0, 0.0), dt=dt)
     sim = make(d)
@@ -83,7 +84,7 @@ def spring(make, dt=1 / 60, k=100.0, m=1.0, amplitude=0.5, periods=10):
 # -- restitution bounce height ----------------------------------------------------------------
 def bounce(make, dt=1 / 60, e=0.5, h=2.0, r=0.25):
     ball = {"shape": {"circle": r}, "position": [0.0, h + r], "restitution": e, "friction": 0.6, "name": "ball"}
-    d = _desc("bounce", [refs.box(10, 1, 0, -0.5, kind="static", name="ground"), ball], dt=dt)
+    d = _desc("bounce", [_d.box(10, 1, 0, -0.5, kind="static", name="ground"), ball], dt=dt)
     sim = make(d)
     ys, vys = [], []
     for _ in range(int(round(2.0 / sim.dt))):
@@ -112,8 +113,8 @@ def _incline_desc(theta, mu, dt):
     c, s = math.cos(theta), math.sin(theta)
     surf = np.array([-s * 0.5, c * 0.5])            # ground top-centre after rotating by theta
     ctr = surf + np.array([-s, c]) * (0.5 + 0.002)   # box centre just above the surface
-    return _desc("incline", [refs.box(30, 1, 0, 0, kind="static", angle=theta, friction=mu, name="slope"),
-                             refs.box(1, 1, float(ctr[0]), float(ctr[1]), angle=theta, friction=mu, name="box")],
+    return _desc("incline", [_d.box(30, 1, 0, 0, kind="static", angle=theta, friction=mu, name="slope"),
+                             _d.box(1, 1, float(ctr[0]), float(ctr[1]), angle=theta, friction=mu, name="box")],
                  dt=dt), np.array([-c, -s])
 
 
@@ -176,7 +177,7 @@ def momentum(make, dt=1 / 60, n=40, seed=3):
     for i in range(n):
         x, y = 1.4 * (i % cols) + rng.uniform(-0.2, 0.2), 1.4 * (i // cols) + rng.uniform(-0.2, 0.2)
         v = rng.uniform(-3, 3, 2)
-        bodies.append(refs.box(0.8, 0.8, x, y, angle=float(rng.uniform(0, 1)), velocity=(float(v[0]), float(v[1])),
+        bodies.append(_d.box(0.8, 0.8, x, y, angle=float(rng.uniform(0, 1)), velocity=(float(v[0]), float(v[1])),
                                density=float(rng.uniform(0.5, 2.0))))
     sim = make(_desc("momentum", bodies, gravity=(0.0, 0.0), dt=dt))
     _, _, v0, _ = sim.state()
@@ -192,14 +193,14 @@ def momentum(make, dt=1 / 60, n=40, seed=3):
 def pile_rest(make, dt=1 / 60, n=100, seed=5, t_max=20.0):
     rng = np.random.default_rng(seed)
     width = 10.0
-    bodies = [refs.box(width + 2, 1, 0, -0.5, kind="static", name="floor"),
-              refs.box(1, 12, -width / 2 - 0.5, 6, kind="static", name="left"),
-              refs.box(1, 12, width / 2 + 0.5, 6, kind="static", name="right")]
+    bodies = [_d.box(width + 2, 1, 0, -0.5, kind="static", name="floor"),
+              _d.box(1, 12, -width / 2 - 0.5, 6, kind="static", name="left"),
+              _d.box(1, 12, width / 2 + 0.5, 6, kind="static", name="right")]
     cols = 7
     for i in range(n):
         x = -0.5 * (cols - 1) * 1.3 + 1.3 * (i % cols) + rng.uniform(-0.1, 0.1)
         y = 1.0 + 1.3 * (i // cols)
-        bodies.append(refs.box(1, 1, x, y, angle=float(rng.uniform(-0.2, 0.2))))
+        bodies.append(_d.box(1, 1, x, y, angle=float(rng.uniform(-0.2, 0.2))))
     sim = make(_desc("pile", bodies, dt=dt))
     dyn = sim.dynamic
     calm_since = None
@@ -220,7 +221,7 @@ def pile_rest(make, dt=1 / 60, n=100, seed=5, t_max=20.0):
             calm_since = None
     out = [dict(metric="pile_time_to_rest", value=rest, expected=None, error=rest if rest is not None else t_max,
                 unit="s", note="" if rest is not None else f"not at rest after {t_max:g} s")]
-    pen = refs.penetration(sim)[0]
+    pen = penetration(sim)[0]
     out.append(dict(metric="pile_max_penetration", value=pen, expected=0.0, error=pen, unit="m"))
     return out
 
@@ -238,6 +239,7 @@ DT_SCENARIOS = ("spring", "bounce", "incline")
 
 
 def run_scenario(name, make, dt=1 / 60):
+    """Metrics of scenario ``name`` (a key of SCENARIOS); a failure is one metric row with a note."""
     try:
         return SCENARIOS[name](make, dt=dt)
     except Exception as exc:  # a mode blowing up is a result, not a crash of the benchmark

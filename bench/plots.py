@@ -22,6 +22,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from .stage_timers import STAGES  # noqa: E402
+
 MODE_COLORS = {"soft_step": "tab:blue", "sequential_impulse": "tab:orange", "impulse": "tab:green",
                "penalty": "tab:red", "hybrid": "tab:purple", "xpbd": "tab:brown"}
 REF_STYLE = {"pymunk": dict(marker="*", color="black", s=180), "pybox2d": dict(marker="s", color="dimgray", s=90)}
@@ -159,7 +161,6 @@ def profile_plot(res, path):
     prof = res.get("profile") or {}
     if not prof:
         return None
-    from .profile import STAGES
     stages = [*STAGES, "python/other"]
     fig, ax = plt.subplots(figsize=(8, 0.6 * len(prof) + 1.6))
     cmap = plt.get_cmap("tab10")

@@ -17,9 +17,9 @@ import pymunk  # noqa: F401,E402
 
 @pytest.fixture(scope="module")
 def results(tmp_path_factory):
-    from bench import run
+    from bench import cli
     out = tmp_path_factory.mktemp("bench")
-    assert run.main(["--tiny", "--out", str(out), "--modes", "soft_step", "--no-compile"]) == 0
+    assert cli.main(["--tiny", "--out", str(out), "--modes", "soft_step", "--no-compile"]) == 0
     return out, json.loads((out / "bench.json").read_text())
 
 
@@ -72,10 +72,13 @@ def test_scaling_accuracy_profile_overhead(results):
 
 def test_reference_scenes_match():
     """The three engines get the same bodies, masses and friction from one description."""
-    from bench import refs
-    d = refs.with_world(refs.pyramid(4), sleeping=False)
-    ours, pm, b2 = (refs.build(e, d) for e in refs.ENGINES)
     import numpy as np
+
+    from bench.desc import with_world
+    from bench.engines import ENGINES, build
+    from bench.scenes import pyramid
+    d = with_world(pyramid(4), sleeping=False)
+    ours, pm, b2 = (build(e, d) for e in ENGINES)
     assert np.allclose(ours.state()[0], pm.state()[0]) and np.allclose(ours.state()[0], b2.state()[0], atol=1e-6)
     masses_pm = [b.mass for b in pm.bodies if b.body_type == b.DYNAMIC]
     masses_b2 = [b.mass for b in b2.bodies if b.type == 2]
@@ -87,6 +90,6 @@ def test_reference_scenes_match():
 
 def test_docs_render(results):
     out, res = results
-    from bench import run
-    text = run.render_docs(res, str(out), out)
+    from bench.report.docs import render_docs
+    text = render_docs(res, str(out), out)
     assert "## Speed" in text and "pareto_pyramid20.png" in text and "python -m bench" in text

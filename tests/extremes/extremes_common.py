@@ -1,5 +1,6 @@
-"""Shared pieces of the extremes suite: the probes live in bench/reliability.py (the table in
-docs/reliability.md is generated from the same functions), the tests assert their figures."""
+"""Shared pieces of the extremes suite: the scenarios live in bench/scenarios/extremes/ (the
+table in docs/reliability.md runs the same ones, judged by bench/reliability), the tests assert
+their own bounds on the scenarios' figures; test_pinned_scenarios.py notices any change to them."""
 
 import physics
 

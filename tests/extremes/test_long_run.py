@@ -1,7 +1,7 @@
 """Extremes: long run (issue 9)."""
 import pytest
 
-from bench.reliability import long_run
+from bench.scenarios.extremes import long_run
 
 
 @pytest.mark.slow
@@ -12,6 +12,6 @@ def test_tumbler_100k_steps_energy_bounded():
 
     Outcome: all finite, no body leaves the drum, and the largest total energy of the contents in
     the last tenth of the run is at most 1.5x that of the first tenth (no secular growth)."""
-    m = long_run("soft_step").metrics
+    m = long_run("soft_step")
     assert m["finite"] and m["escaped"] == 0
     assert m["ratio"] <= 1.5

@@ -1,7 +1,7 @@
 """Extremes: mass ratios (issue 9)."""
 import pytest
 
-from bench.reliability import mass_ratio_stack, spring_chain
+from bench.scenarios.extremes import mass_ratio_stack, spring_chain
 from extremes_common import CONTINUOUS
 
 
@@ -12,7 +12,7 @@ def test_heavy_on_light_soft_step_holds_the_load():
     and the combined sink over the last second is below 25 cm, a quarter of the light box (soft
     contacts are mass-normalised: the ground contact of a 1 kg body carries 9.8 kN; measured 9 to
     14 cm while the soft_step defaults were being tuned)."""
-    m = mass_ratio_stack("soft_step").metrics
+    m = mass_ratio_stack("soft_step")
     assert m["finite"] and m["order_kept"]
     assert m["sink"] < 0.25
     assert m["speed"] < 0.05
@@ -22,7 +22,7 @@ def test_heavy_on_light_soft_step_tuned_sinks_less():
     """Regime: the same 1000:1 stack with soft_step at 16 sub-steps and 120 Hz contacts.
 
     Outcome: the sink drops below 3 cm (the advice in docs/reliability.md)."""
-    m = mass_ratio_stack("soft_step", settings=dict(substeps=16, contact_hertz=120.0)).metrics
+    m = mass_ratio_stack("soft_step", settings=dict(substeps=16, contact_hertz=120.0))
     assert m["finite"] and m["order_kept"] and m["sink"] < 0.03
 
 
@@ -33,7 +33,7 @@ def test_spring_chain_carrying_100kg_settles_without_gaining_energy(solver):
 
     Outcome wanted: total energy never exceeds the release energy by more than 1% of the energy
     the fall releases, and the 100 kg box rests within 5% of the static stretch."""
-    m = spring_chain(solver).metrics
+    m = spring_chain(solver)
     assert m["finite"]
     assert m["energy_rise"] <= 0.01 * m["energy_scale"]
     assert m["rel_error"] < 0.05

@@ -1,0 +1,85 @@
+"""The benchmark suite: scenes x solver modes x settings, beside pymunk and pybox2d.
+
+    python -m bench                 # full run (< 20 min on 2 cores): results, plots, table
+    python -m bench --quick         # CI smoke (< 2 min): defaults only, short runs
+    python -m bench --write-docs    # full run, then rewrite docs/benchmarks.md
+    python -m bench --docs-only     # re-plot and rewrite the docs from bench/results/bench.json
+
+Speed: every configuration runs its scene in chunks of steps, interleaved chunk by
+chunk with pymunk and pybox2d on the identical scene (ours, pymunk, pybox2d, ours,
+...), after warm-up chunks that are not timed; ms/step is the median over the timed
+chunks and the ratio to a reference is the median of the per-chunk ratios, so
+machine noise that hits all three engines cancels.  The first step (numba compile
+or cache load) is timed apart and never enters ms/step.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from .configs import QUICK_MODES, available_modes
+from .paths import RESULTS
+from .report.docs import write_docs
+from .report.files import write_outputs
+from .report.terminal import print_report
+from .scenes import SCENES
+from .session import PARTS, RunOptions, run
+
+
+def parser() -> argparse.ArgumentParser:
+    """The command line of ``python -m bench``."""
+    ap = argparse.ArgumentParser(prog="python -m bench", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--quick", action="store_true", help="CI smoke: default settings only, short runs (< 2 min)")
+    ap.add_argument("--out", type=Path, default=None,
+                    help="results directory (default bench/results, or bench/results/quick with --quick)")
+    ap.add_argument("--modes", default=None, help="comma-separated solver modes (default: every available mode)")
+    ap.add_argument("--scenes", default=None, help=f"comma-separated scenes from {list(SCENES)}")
+    ap.add_argument("--parts", default="overhead,compile,speed,scaling,accuracy,profile",
+                    help="comma-separated parts to run (default: all)")
+    ap.add_argument("--no-refs", action="store_true", help="skip pymunk and pybox2d")
+    ap.add_argument("--no-compile", action="store_true", help="skip the cold/cached compile subprocesses")
+    ap.add_argument("--budget", type=float, default=None, help="seconds per configuration and scene before it is cut")
+    ap.add_argument("--write-docs", action="store_true", help="rewrite docs/benchmarks.md from this run")
+    ap.add_argument("--docs-only", action="store_true", help="re-plot and rewrite the docs from the saved results")
+    ap.add_argument("--tiny", action="store_true", help=argparse.SUPPRESS)  # tests: even smaller than --quick
+    return ap
+
+
+def options(a) -> RunOptions:
+    """RunOptions from parsed arguments; SystemExit (argparse's error) for an unknown scene or part."""
+    quick = a.quick or a.tiny
+    modes = a.modes.split(",") if a.modes else available_modes()
+    if quick and not a.modes:  # the smoke run: the default mode and the classic solver
+        modes = [m for m in modes if m in QUICK_MODES] or modes[:1]
+    parts = set(a.parts.split(","))
+    if quick or a.no_compile:
+        parts.discard("compile")
+    scenes = a.scenes.split(",") if a.scenes else [k for k, s in SCENES.items() if not quick or s.quick]
+    if a.tiny and not a.scenes:
+        scenes = ["pyramid20"]
+    bad = [s for s in scenes if s not in SCENES] + [p for p in parts if p not in PARTS]
+    if bad:
+        parser().error(f"unknown scene or part: {', '.join(bad)} (scenes: {', '.join(SCENES)}; "
+                       f"parts: {', '.join(PARTS)})")
+    return RunOptions(modes=modes, scenes=scenes, parts=parts, engines=() if a.no_refs else RunOptions.engines,
+                      quick=a.quick, tiny=a.tiny, budget_s=a.budget or 20.0)
+
+
+def main(argv=None) -> int:
+    """``python -m bench``: run, write results (and the docs), print the report; returns 0."""
+    a = parser().parse_args(argv)
+    outdir = a.out or (RESULTS / "quick" if (a.quick or a.tiny) else RESULTS)
+    if a.docs_only:
+        res = json.loads((outdir / "bench.json").read_text())
+        write_outputs(res, outdir)
+        print(f"wrote {write_docs(res, outdir)}")
+        return 0
+    res = run(options(a))
+    pngs = write_outputs(res, outdir)
+    print_report(res)
+    print(f"\nresults: {outdir} ({', '.join(p.name for p in pngs)}); wall {res['meta']['wall_s']:.0f} s")
+    if a.write_docs:
+        print(f"wrote {write_docs(res, outdir)}")
+    return 0

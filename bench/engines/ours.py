@@ -1,0 +1,90 @@
+"""Stelkropp behind the ``Sim`` interface: a ``physics.World`` built from a description."""
+from __future__ import annotations
+
+import numpy as np
+
+from ..desc import body_records
+from .base import Sim
+
+
+class OursSim(Sim):
+    """Stelkropp running a description.  ``solver`` / ``settings`` / ``integrator`` choose the
+    mode and override its defaults; ``world``: an already built world of the same bodies (the
+    scene loader's), else one is built from the description; ``dt`` (s) overrides the
+    description's.  Sleeping, gravity and dt follow the description's world block."""
+
+    engine = "stelkropp"
+
+    def __init__(self, desc, solver=None, settings=None, world=None, integrator=None, dt=None):
+        super().__init__(desc)
+        w = desc.get("world", {})
+        if world is None:
+            world = build_ours_world(desc)
+        world.sleeping = bool(w.get("sleeping", False))
+        if "gravity" in w:
+            world.gravity = tuple(w["gravity"])
+        if "dt" in w:
+            world.dt = float(w["dt"])
+        if solver:
+            world.solver = solver
+        if integrator:
+            world.integrator = integrator
+        for k, v in (settings or {}).items():
+            world.settings[k] = v
+        if dt:
+            world.dt = dt
+            self.dt = dt
+        self.world = world
+        self.handles = world.bodies
+        # body-frame centre of mass of every body: state() turns the origins back into centres
+        self._local_com = np.array([r["shape"].centroid for r in self.recs], float).reshape(-1, 2)
+
+    def step(self):
+        """One ``world.step()``."""
+        self.world.step()
+
+    def state(self):
+        """(com, angle, v, w) from ``world.state()`` (body order = description order: the
+        benchmark never removes bodies)."""
+        s = self.world.state()
+        q = s["angle"]
+        c, sn = np.cos(q), np.sin(q)
+        lc = self._local_com
+        com = s["position"].copy()
+        if np.any(lc):
+            com[:, 0] += c * lc[:, 0] - sn * lc[:, 1]
+            com[:, 1] += sn * lc[:, 0] + c * lc[:, 1]
+        return com, q.copy(), s["velocity"].copy(), s["angular_velocity"].copy()
+
+
+def build_ours_world(desc):
+    """A ``physics.World`` from a description (the scene loader's job, done here from the same dict
+    so that benchmark-generated scenes need no file)."""
+    import physics
+    w = desc.get("world", {})
+    world = physics.World(gravity=tuple(w.get("gravity", (0.0, -9.81))), dt=float(w.get("dt", 1 / 60)),
+                          solver=w.get("solver", "soft_step"), integrator=w.get("integrator", "symplectic_euler"),
+                          sleeping=bool(w.get("sleeping", True)), settings=w.get("settings") or None)
+    handles = {}
+    for i, (b, r) in enumerate(zip(desc["bodies"], body_records(desc))):
+        h = world.add_body(r["shape"], kind=r["kind"], position=r["position"], angle=r["angle"],
+                           velocity=r["velocity"], angular_velocity=r["angular_velocity"], density=r["density"],
+                           restitution=r["restitution"], friction=(r["mu_s"], r["mu_d"]))
+        handles[b.get("name", i)] = h
+    for s in desc.get("springs", []):
+        world.add_spring(handles[s["a"]], None if s.get("b") is None else handles[s["b"]],
+                         anchor_a=tuple(s.get("anchor_a", (0, 0))), anchor_b=tuple(s.get("anchor_b", (0, 0))),
+                         stiffness=float(s.get("stiffness", 100.0)), damping=float(s.get("damping", 0.0)),
+                         rest_length=s.get("rest_length"))
+    return world
+
+
+def loaded_world(data, source):
+    """The world the scene loader builds from a shipped scene's raw description ``data``, or
+    None when the loader refuses it (the benchmark then builds from the description itself)."""
+    try:
+        from physics.scene import scene_from_dict
+        world = scene_from_dict(data, source=source)
+    except Exception:  # the loader is another module's job; the same dict builds the same world
+        return None
+    return world if len(world.bodies) == len(data["bodies"]) else None

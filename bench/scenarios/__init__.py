@@ -1,0 +1,2 @@
+"""Scenarios shared by the benchmark and the tests (``extremes``: the extreme regimes that
+``python -m bench.reliability`` tabulates and ``tests/extremes/`` asserts)."""
