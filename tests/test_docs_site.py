@@ -75,6 +75,7 @@ def test_every_page_renders_in_chromium(site):
     assert report.ok, report.summary()
     assert report.pages == len(list(site.rglob("*.html")))
     assert report.images >= 10  # the plots and the screenshot, each decoded with a size
+    assert report.search_hits >= 3  # the word appears on the tutorial, the guides and the API pages
     assert sorted(p.name for p in report.shots) == sorted(p.replace("/", "_").removesuffix(".html") + ".png"
                                                           for p in SHOT_PAGES)
     for path in report.shots:
@@ -137,3 +138,15 @@ def test_code_on_the_pages_runs(page, tmp_path):
     proc = subprocess.run([sys.executable, str(script)], cwd=tmp_path, capture_output=True, text=True,
                           timeout=1200, env={**os.environ, "PYTHONPATH": str(ROOT)})
     assert proc.returncode == 0, f"{page}'s code failed:\n{proc.stderr[-3000:]}"
+
+
+def test_links_outside_docs_resolve_only_to_existing_files():
+    """The hook copies linked repository files into the site; a missing one must stay a broken
+    link so that the strict build reports it (mkdocs: 'target is not found')."""
+    from tools.docs.hooks import _outside_target
+    docs = ROOT / "docs"
+    assert _outside_target("benchmarks.md", "../bench/results/scaling.png", docs) == ROOT / "bench/results/scaling.png"
+    assert _outside_target("reference/world.md", "../../scenes/pyramid.json", docs) == ROOT / "scenes/pyramid.json"
+    assert _outside_target("benchmarks.md", "../bench/results/no-such-plot.png", docs) is None
+    assert _outside_target("tutorial.md", "cli.md#info", docs) is None          # inside docs: mkdocs' own
+    assert _outside_target("tutorial.md", "https://numba.pydata.org/", docs) is None

@@ -28,6 +28,9 @@ SHOT_PAGES = ("index.html", "tutorial.html", "solver-modes.html", "reference/wor
 # a rendered page has at least this much text in its main content (the shortest, an API page
 # before its docstrings are written, still has signatures)
 MIN_TEXT = 200
+# typed into the search box of the home page: the index is built by mkdocs and searched by a
+# web worker, so this proves both work from the local server
+SEARCH_WORD = "restitution"
 
 # what the page reports about itself once loaded
 PAGE_FACTS = """() => {
@@ -51,6 +54,7 @@ class Report:
     resources: int = 0
     requests: int = 0
     images: int = 0
+    search_hits: int = 0
     problems: list[str] = field(default_factory=list)
     shots: list[Path] = field(default_factory=list)
     seconds: dict[str, float] = field(default_factory=dict)
@@ -61,7 +65,8 @@ class Report:
 
     def summary(self) -> str:
         head = (f"{self.pages} pages, {self.links} internal links, {self.resources} files, "
-                f"{self.images} images, {self.requests} browser requests; "
+                f"{self.images} images, {self.requests} browser requests, "
+                f"{self.search_hits} search results for {SEARCH_WORD!r}; "
                 + ", ".join(f"{k} {v:.1f} s" for k, v in self.seconds.items()))
         if self.ok:
             return f"site check passed: {head}"
@@ -115,6 +120,8 @@ def _load_pages(base: str, urls: list[str], report: Report, shots: Path | None, 
                 issues.clear()
                 _load_one(page, base, url, report, shots, issues)
                 report.pages += 1
+            if base + "index.html" in urls:
+                _search(page, base, report)
         finally:
             browser.close()
     say(f"loaded {report.pages} pages in Chromium")
@@ -136,6 +143,21 @@ def _listen(page, issues: list[str], report: Report) -> None:
     page.on("pageerror", lambda e: issues.append(f"script error: {e}"))
     page.on("requestfailed", lambda r: issues.append(f"request failed: {r.url} ({r.failure})"))
     page.on("response", lambda r: r.status >= 400 and issues.append(f"HTTP {r.status}: {r.url}"))
+
+
+def _search(page, base: str, report: Report) -> None:
+    """Type SEARCH_WORD into the home page's search box as a person would; count the results."""
+    page.goto(base + "index.html", wait_until="networkidle")
+    box = page.locator("input.md-search__input")
+    box.click()
+    box.press_sequentially(SEARCH_WORD, delay=30)  # the theme searches on key events
+    try:
+        page.wait_for_selector(".md-search-result__item", timeout=10_000)
+    except Exception:  # noqa: BLE001 (playwright's TimeoutError: reported below)
+        pass
+    report.search_hits = page.locator(".md-search-result__item").count()
+    if not report.search_hits:
+        report.problems.append(f"index.html: searching for {SEARCH_WORD!r} found nothing")
 
 
 def _load_one(page, base: str, url: str, report: Report, shots: Path | None, issues: list[str]) -> None:

@@ -19,6 +19,9 @@ import shlex
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
+# the examples page lists these first, in this order (simplest first); any other script follows
+EXAMPLE_ORDER = ("oscillator_period.py", "export_trajectory.py", "compare_solvers.py", "build_scene.py",
+                 "pyglet_window.py")
 
 
 def expand(name: str, args: str, page: str) -> str:
@@ -102,7 +105,9 @@ def _docstring(path: Path) -> str:
 def examples() -> str:
     """Every examples/*.py: title (first docstring line), the rest of its docstring, its source."""
     out = []
-    for path in sorted((ROOT / "examples").glob("*.py")):
+    scripts = sorted((ROOT / "examples").glob("*.py"),
+                     key=lambda p: (EXAMPLE_ORDER.index(p.name) if p.name in EXAMPLE_ORDER else len(EXAMPLE_ORDER), p.name))
+    for path in scripts:
         doc = _docstring(path)
         title, _, rest = doc.partition("\n")
         rel = path.relative_to(ROOT).as_posix()
