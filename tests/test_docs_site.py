@@ -150,3 +150,31 @@ def test_links_outside_docs_resolve_only_to_existing_files():
     assert _outside_target("benchmarks.md", "../bench/results/no-such-plot.png", docs) is None
     assert _outside_target("tutorial.md", "cli.md#info", docs) is None          # inside docs: mkdocs' own
     assert _outside_target("tutorial.md", "https://numba.pydata.org/", docs) is None
+
+
+def test_docstring_coverage_counts_what_the_reference_shows(tmp_path):
+    """`python -m tools.docs coverage` on a package made here: it must see exported names,
+    class members (methods, properties, attributes set in __init__) and skip private ones."""
+    from tools.docs.coverage import measure
+    pkg = tmp_path / "pkgx"
+    pkg.mkdir()
+    (pkg / "__init__.py").write_text('from .core import Thing, helper\n__all__ = ["Thing", "helper"]\n')
+    (pkg / "core.py").write_text(textwrap.dedent('''
+        class Thing:
+            """A thing."""
+            def __init__(self):
+                self.size = 1
+            def grow(self, by):
+                """Grow by ``by`` metres."""
+            @property
+            def mass(self):
+                return 1.0
+            def _hidden(self):
+                pass
+        def helper():
+            pass
+    '''))
+    cov = measure("pkgx", search_path=tmp_path)
+    assert sorted(cov.documented) == ["pkgx.Thing", "pkgx.Thing.grow"]
+    assert sorted(cov.missing) == ["pkgx.Thing.mass", "pkgx.Thing.size", "pkgx.helper"]
+    assert cov.by_owner() == {"pkgx.Thing": (2, 4), "pkgx.helper": (0, 1)}

@@ -3,6 +3,7 @@
     build [--out DIR]                      mkdocs build --strict (warnings are errors) into DIR (site/)
     check [--out DIR] [--shots DIR]        build, then load every page in headless Chromium
     serve [--out DIR] [--port N]           build, then serve DIR on http://127.0.0.1:N/
+    coverage [--missing]                   which public names of physics have a docstring
 
 Exit codes: 0 success, 1 the build warned or failed, or a page failed the browser check.
 """
@@ -56,7 +57,13 @@ def main(argv=None) -> int:
             sp.add_argument("--shots", type=Path, help="save screenshots of a few pages here")
         if name == "serve":
             sp.add_argument("--port", type=int, default=8000)
+    cov = sub.add_parser("coverage", help="count the public names of physics that have a docstring")
+    cov.add_argument("--missing", action="store_true", help="list every name without one")
     args = p.parse_args(argv)
+    if args.cmd == "coverage":
+        from .coverage import report
+        print(report(args.missing))
+        return 0
     _build_or_exit(args.out)
     if args.cmd == "check":
         from .browser import check_site

@@ -1,6 +1,6 @@
 """Sections of the site generated from the code at build time (see tools/docs/hooks.py).
 
-A page asks for one with an HTML comment, ``<!-- stelkropp:NAME ARGS -->``:
+A page asks for one with an HTML comment alone on its line, ``<!-- stelkropp:NAME ARGS -->``:
 
 * ``solver-settings``: every solver mode's description and declared settings (name,
   default, range, meaning), read from ``physics.solvers``;

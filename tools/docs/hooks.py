@@ -25,7 +25,8 @@ from tools.docs import generated  # noqa: E402
 
 # a Markdown link or image target: ](target) or ](target "title"), no spaces inside
 LINK = re.compile(r"(\]\()([^)\s]+)((?:\s+\"[^\"]*\")?\))")
-MARKER = re.compile(r"<!--\s*stelkropp:([a-z-]+)\s*(.*?)\s*-->")
+# a marker stands alone on its line (so one quoted in `code` or a table is left as text)
+MARKER = re.compile(r"^<!--\s*stelkropp:([a-z-]+)\s*(.*?)\s*-->[ \t]*$", re.M)
 REPO_DIR = "repo"
 
 
