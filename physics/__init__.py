@@ -14,13 +14,20 @@ from .spring import Spring
 from .world import World
 
 __all__ = ["World", "Body", "Spring", "Polygon", "Circle", "SceneError", "SimulationError",
-           "load_scene", "solvers_available"]
+           "load_scene", "save_scene", "solvers_available"]
 
 
 def load_scene(path):
     """Load a scene file (JSON) into a new World; raises SceneError listing every problem."""
     from .scene import load_scene as _load
     return _load(path)
+
+
+def save_scene(world, path, name=None, description=None) -> None:
+    """Write ``world`` as a scene file (JSON), atomically; ``name``/``description`` override the
+    world's metadata in the file.  Raises OSError if it cannot be written (the old file is kept)."""
+    from .scene.save import save_scene as _save
+    _save(world, path, name=name, description=description)
 
 
 def solvers_available() -> list[str]:

@@ -74,7 +74,7 @@ def simulate(args) -> int:
     result, code = _run(world, args.steps, args.record)
     text = json.dumps(result, allow_nan=False) + "\n"
     if args.out:
-        from .scene_json import write_atomic
+        from .scene.json_io import write_atomic
         write_atomic(args.out, text)
     else:
         sys.stdout.write(text)
@@ -101,7 +101,7 @@ def _configure(world, args) -> None:
 
 def _value(raw: str):
     """JSON if it parses (numbers, true, lists), else the bare word; NaN/Infinity refused."""
-    from .scene_json import NonFinite, parse
+    from .scene.json_io import NonFinite, parse
     try:
         v = parse(raw)
     except ValueError:

@@ -545,7 +545,7 @@ class World:
 
     def save_scene(self, path, name: str | None = None, description: str | None = None) -> None:
         """Write this world as a scene file (atomically: temp file + rename)."""
-        from .scene import save_scene
+        from .scene.save import save_scene  # lazy, and save imports nothing that imports world
         save_scene(self, path, name=name, description=description)
 
     def __repr__(self):

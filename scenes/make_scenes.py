@@ -11,7 +11,6 @@ scene saves byte-for-byte the same).  Random placement uses fixed seeds.
 """
 from __future__ import annotations
 
-import json
 import math
 import random
 import sys
@@ -21,8 +20,8 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 
 from physics.scene import scene_from_dict, scene_to_dict, scene_metadata  # noqa: E402
-from physics.scene_json import dumps, write_atomic  # noqa: E402
-from physics.scene_schema import SCHEMA, SCHEMA_FILE  # noqa: E402
+from physics.scene.json_io import dumps, write_atomic  # noqa: E402
+from physics.scene.schema import SCHEMA_FILE, schema_text  # noqa: E402
 
 DT = 1.0 / 60.0
 G = [0.0, -10.0]
@@ -442,7 +441,7 @@ def canonical(data: dict) -> str:
 
 
 def write_schema() -> None:
-    write_atomic(HERE / SCHEMA_FILE, json.dumps(SCHEMA, indent=2) + "\n")
+    write_atomic(HERE / SCHEMA_FILE, schema_text())
 
 
 def main(argv) -> None:

@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 import physics
-from physics import scene_schema
+from physics.scene import schema as scene_schema
 from physics.scene import load_scene, save_scene, scene_from_dict, scene_metadata, scene_to_dict
 from physics.store import BODY_FIELDS, SPRING_FIELDS
 
@@ -244,6 +244,7 @@ def test_published_schema_file_matches_the_module():
     published = json.loads((ROOT / "scenes" / "stelkropp.schema.json").read_text())
     assert published == json.loads(json.dumps(scene_schema.SCHEMA)), \
         "run: .venv/bin/python scenes/make_scenes.py --schema"
+    assert (ROOT / "scenes" / "stelkropp.schema.json").read_text() == scene_schema.schema_text()
 
 
 def test_schema_is_valid_draft_2020_12():
@@ -271,3 +272,72 @@ def test_schema_defaults_match_the_api():
         assert wsig[key].default == scene_schema.WORLD_DEFAULTS[key], key
     assert list(wsig["gravity"].default) == scene_schema.WORLD_DEFAULTS["gravity"]
     assert math.isclose(scene_schema.WORLD_DEFAULTS["dt"], 1 / 60)
+
+
+# -- the package's public face and its import direction ---------------------------
+def test_physics_save_scene_is_public_and_writes_what_world_save_scene_writes(tmp_path):
+    assert "save_scene" in physics.__all__ and "load_scene" in physics.__all__
+    w = scene_from_dict(EXAMPLE)
+    physics.save_scene(w, tmp_path / "a.json", name="n", description="d")
+    w.save_scene(tmp_path / "b.json", name="n", description="d")
+    save_scene(w, tmp_path / "c.json", name="n", description="d")
+    texts = {(tmp_path / f).read_text() for f in ("a.json", "b.json", "c.json")}
+    assert len(texts) == 1
+    assert json.loads(texts.pop())["name"] == "n"
+    assert w.metadata["name"] == "Pyramid 20"  # overrides go to the file, not the world
+
+
+def test_metadata_is_a_plain_attribute_of_the_world():
+    w = physics.World()
+    assert w.metadata == {} and scene_metadata(w) is w.metadata
+    w.metadata["name"] = "renamed"
+    assert scene_to_dict(w)["name"] == "renamed"
+    loaded = scene_from_dict(dict(EXAMPLE, camera={"center": [0.0, 1.0], "zoom": 9.0}))
+    assert loaded.metadata == {"name": "Pyramid 20", "description": "210 boxes on static ground",
+                               "camera": {"center": [0.0, 1.0], "zoom": 9.0}}
+
+
+def _project_imports(name: str) -> set:
+    """Modules of physics/ that module ``name`` imports anywhere (lazy imports too), resolved the
+    way ../shared/tools/arch_check.py does: each target to the longest name that is a module, and
+    a package's __init__ importing its own submodules is not an edge."""
+    import ast
+    path = _module_file(name)
+    is_pkg = path.name == "__init__.py"
+    parts = name.split(".") if is_pkg else name.split(".")[:-1]
+    out = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        targets = []
+        if isinstance(node, ast.ImportFrom):
+            base = parts[: len(parts) - node.level + 1] if node.level else []
+            mod = ".".join(base + ([node.module] if node.module else []))
+            targets = [mod] + [f"{mod}.{a.name}" for a in node.names]
+        elif isinstance(node, ast.Import):
+            targets = [a.name for a in node.names]
+        for t in targets:
+            while t and _module_file(t) is None:
+                t = t.rpartition(".")[0]
+            if t.startswith("physics") and t != name and not (is_pkg and t.startswith(name + ".")):
+                out.add(t)
+    return out
+
+
+def _module_file(name: str):
+    p = ROOT.joinpath(*name.split("."))
+    if (p / "__init__.py").exists():
+        return p / "__init__.py"
+    return p.with_suffix(".py") if p.with_suffix(".py").exists() else None
+
+
+def test_imports_run_one_way_world_never_reaches_the_scene_loader():
+    """world.py may import only physics.scene.save, and nothing save reaches imports physics.world."""
+    from_world = {m for m in _project_imports("physics.world") if m.startswith("physics.scene")}
+    assert from_world == {"physics.scene.save"}, from_world
+    seen, todo = set(), ["physics.scene.save"]
+    while todo:
+        name = todo.pop()
+        if name not in seen:
+            seen.add(name)
+            todo += list(_project_imports(name))
+    assert "physics.world" not in seen and "physics.scene.load" not in seen, sorted(seen)
+    assert "physics.scene.dump" in seen  # the walk did follow save's imports

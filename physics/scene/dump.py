@@ -12,8 +12,8 @@ from __future__ import annotations
 import json
 import math
 
-from . import scene_schema as fmt
-from .store import KIND_NAMES
+from ..store import KIND_NAMES
+from . import schema as fmt
 
 
 def _shortest(target: float, base: float, forward) -> float:

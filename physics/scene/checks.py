@@ -14,10 +14,11 @@ import re
 
 from jsonschema import Draft202012Validator
 
-from . import scene_schema as fmt
-from . import solvers
-from .scene_json import NonFinite
-from .shapes import Circle, Polygon
+from .. import solvers
+from ..errors import SceneError
+from ..shapes import Circle, Polygon
+from . import schema as fmt
+from .json_io import NonFinite
 
 _VALIDATOR = None
 _IDENT = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
@@ -252,6 +253,14 @@ def check(data):
     problems += schema_problems(data, Rejected(p for p, _ in problems))
     more, shapes = hand_problems(data, Rejected(p for p, _ in problems))
     return _finish(problems + more), shapes
+
+
+def scene_error(source, problems) -> SceneError:
+    """One SceneError for ``problems`` [(json_path, reason)]: names ``source``, lists each."""
+    n = len(problems)
+    lines = [f"{source}: {n} problem{'s' if n != 1 else ''} in scene"]
+    lines += [f"  {p}: {r}" for p, r in problems]
+    return SceneError("\n".join(lines), problems=problems, path=source)
 
 
 def _finish(problems):

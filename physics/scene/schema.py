@@ -1,11 +1,12 @@
 """The scene format as a JSON Schema (draft 2020-12), with every default.
 
 This module is the source of truth: the published ``scenes/stelkropp.schema.json``
-is written from it by ``scenes/make_scenes.py --schema`` (a test keeps the two
-equal), so an installed package validates without the repository's files.
+is its ``schema_text()``, written by ``scenes/make_scenes.py --schema`` or
+``python -m physics.scene.schema scenes/stelkropp.schema.json`` (a test keeps the
+two byte-for-byte equal), so an installed package validates without the repository's files.
 The schema checks structure, types and ranges; what it cannot express
 (convexity, names that refer to each other, the solver's own settings) is
-checked by hand in ``physics/scene_checks.py``.
+checked by hand in ``physics/scene/checks.py``.
 """
 from __future__ import annotations
 
@@ -198,3 +199,15 @@ SCHEMA = {
         "camera": _CAMERA,
     },
 }
+
+
+def schema_text() -> str:
+    """The published schema file's exact text (``scenes/stelkropp.schema.json``)."""
+    import json
+    return json.dumps(SCHEMA, indent=2) + "\n"
+
+
+if __name__ == "__main__":  # python -m physics.scene.schema PATH: write the published schema
+    import sys
+    from .json_io import write_atomic
+    write_atomic(sys.argv[1] if len(sys.argv) > 1 else SCHEMA_FILE, schema_text())

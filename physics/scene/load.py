@@ -1,0 +1,81 @@
+"""Scene files and scene data to a new World.
+
+Reading is strict and bounded (``json_io``); every problem is found before
+anything is built (``checks``), so a bad file raises one SceneError listing
+all of them and never half-builds a world.
+"""
+from __future__ import annotations
+
+import os
+
+from . import schema as fmt
+from .checks import check, scene_error
+from .json_io import parse, read_text
+
+
+def read_scene(path) -> dict:
+    """Parse a scene file into plain data without checking it (SceneError for unreadable files)."""
+    src = os.fspath(path)
+    try:
+        text = read_text(src, fmt.MAX_FILE_BYTES)
+    except OSError as exc:
+        raise scene_error(src, [("$", f"cannot read the file: {exc.strerror or exc}")]) from None
+    except UnicodeDecodeError as exc:
+        raise scene_error(src, [("$", f"not UTF-8 text ({exc.reason} at byte {exc.start})")]) from None
+    except ValueError as exc:
+        raise scene_error(src, [("$", str(exc))]) from None
+    try:
+        return parse(text)
+    except ValueError as exc:  # JSONDecodeError, and ints too long to convert
+        where = f"line {exc.lineno} column {exc.colno}: {exc.msg}" if hasattr(exc, "lineno") else str(exc)
+        raise scene_error(src, [("$", f"not valid JSON ({where})")]) from None
+
+
+def load_scene(path):
+    """Load a scene file into a new World; raises SceneError listing every problem."""
+    src = os.fspath(path)
+    return scene_from_dict(read_scene(src), source=src)
+
+
+def scene_from_dict(data, source: str = "<dict>"):
+    """Build a World from scene data; raises SceneError (naming ``source``) listing every problem."""
+    problems, shapes = check(data)
+    if problems:
+        raise scene_error(source, problems)
+    return _build(data, shapes, source)
+
+
+def _build(data, shapes, source):
+    from ..world import World
+    w = {**fmt.WORLD_DEFAULTS, **data.get("world", {})}
+    try:
+        world = World(gravity=w["gravity"], dt=w["dt"], solver=w["solver"], integrator=w["integrator"],
+                      sleeping=w["sleeping"], broadphase=w["broadphase"], narrowphase=w["narrowphase"],
+                      settings=w["settings"])
+    except (ValueError, KeyError, ImportError) as exc:  # the checks should have caught it; say so anyway
+        raise scene_error(source, [("world", str(exc))]) from None
+    handles = {}
+    for i, (b, shape) in enumerate(zip(data["bodies"], shapes)):
+        handles[i] = _add_body(world, b, shape, f"bodies[{i}]", source)
+    by_name = {b["name"]: handles[i] for i, b in enumerate(data["bodies"]) if "name" in b}
+    for i, sp in enumerate(data.get("springs", [])):
+        _add_spring(world, sp, by_name, f"springs[{i}]", source)
+    world.metadata.update({k: data[k] for k in ("name", "description", "camera") if k in data})
+    return world
+
+
+def _add_body(world, b, shape, path, source):
+    kw = {**fmt.BODY_DEFAULTS, **{k: v for k, v in b.items() if k != "shape"}}
+    try:
+        return world.add_body(shape, **kw)
+    except ValueError as exc:
+        raise scene_error(source, [(path, str(exc))]) from None
+
+
+def _add_spring(world, sp, by_name, path, source):
+    kw = {**fmt.SPRING_DEFAULTS, **{k: v for k, v in sp.items() if k not in ("a", "b")}}
+    b = None if sp["b"] is None else by_name[sp["b"]]
+    try:
+        return world.add_spring(by_name[sp["a"]], b, **kw)
+    except ValueError as exc:
+        raise scene_error(source, [(path, str(exc))]) from None
