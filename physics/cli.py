@@ -3,6 +3,7 @@
     simulate SCENE --steps N [--solver NAME] [--dt DT] [--set KEY=VALUE ...] [--out FILE] [--record K]
     validate SCENE...
     info SCENE [--json]
+    schema                      print the scene format's JSON Schema
 
 Exit codes: 0 success, 1 a bad scene or option, 2 the simulation produced
 non-finite values (the state written is the last finite one, "finite": false).
@@ -52,6 +53,8 @@ def _parser() -> argparse.ArgumentParser:
     inf.add_argument("scene")
     inf.add_argument("--json", action="store_true", help="print machine-readable JSON")
     inf.set_defaults(run=info)
+    sch = sub.add_parser("schema", help="print the scene format's JSON Schema (scenes/stelkropp.schema.json)")
+    sch.set_defaults(run=schema)
     return p
 
 
@@ -188,4 +191,11 @@ def info(args) -> int:
     print(f"  gravity:    {list(world.gravity)}   dt: {world.dt:g} s")
     print("  settings:   " + ", ".join(f"{k}={v}" for k, v in data["settings"].items()))
     print("  stages:     " + " -> ".join(data["stages"]))
+    return 0
+
+
+def schema(args) -> int:
+    """Print the published JSON Schema of the scene format."""
+    from .scene.schema import schema_text
+    sys.stdout.write(schema_text())
     return 0

@@ -164,3 +164,8 @@ def test_python_dash_m_physics(tmp_path, bad_scene):
 def test_console_script_is_declared():
     text = (ROOT / "pyproject.toml").read_text()
     assert 'stelkropp-sim = "physics.cli:main"' in text
+
+
+def test_schema_prints_the_published_schema(capsys):
+    code, out, _ = run(capsys, "schema")
+    assert code == 0 and out == (ROOT / "scenes" / "stelkropp.schema.json").read_text()

@@ -254,12 +254,31 @@ def test_schema_is_valid_draft_2020_12():
 
 
 def test_schema_choices_match_the_world():
-    from physics import world
+    """The schema's choices are the ones the world accepts (physics/options.py) and nothing else."""
+    from physics import options
     from physics.store import KINDS
-    assert scene_schema.INTEGRATORS == list(world.INTEGRATORS)
-    assert scene_schema.BROADPHASES == list(world.BROADPHASES)
-    assert scene_schema.NARROWPHASES == list(world.NARROWPHASES)
+    assert scene_schema.SOLVERS == list(options.SOLVERS) == physics.solvers_available()
+    assert scene_schema.INTEGRATORS == list(options.INTEGRATORS)
+    assert scene_schema.BROADPHASES == list(options.BROADPHASES)
+    assert scene_schema.NARROWPHASES == list(options.NARROWPHASES)
     assert scene_schema.KINDS == list(KINDS)
+    w = physics.World()
+    for attr, names in (("integrator", scene_schema.INTEGRATORS), ("broadphase", scene_schema.BROADPHASES),
+                        ("narrowphase", scene_schema.NARROWPHASES), ("solver", scene_schema.SOLVERS)):
+        for name in names:
+            setattr(w, attr, name)
+            assert getattr(w, attr) == name
+        with pytest.raises(ValueError):
+            setattr(w, attr, "no_such_" + attr)
+
+
+def test_docs_list_exactly_the_solvers_this_build_has():
+    """docs/scene-format.md's world.solver row names every mode and no other (it once listed xpbd)."""
+    import re
+    doc = (ROOT / "docs" / "scene-format.md").read_text()
+    row = next(line for line in doc.splitlines() if line.startswith("| `solver` |"))
+    listed = re.findall(r"`([a-z_]+)`", row.split("|")[3].split("—")[0])
+    assert listed == physics.solvers_available(), row
 
 
 def test_schema_defaults_match_the_api():

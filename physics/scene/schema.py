@@ -1,14 +1,18 @@
 """The scene format as a JSON Schema (draft 2020-12), with every default.
 
 This module is the source of truth: the published ``scenes/stelkropp.schema.json``
-is its ``schema_text()``, written by ``scenes/make_scenes.py --schema`` or
-``python -m physics.scene.schema scenes/stelkropp.schema.json`` (a test keeps the
-two byte-for-byte equal), so an installed package validates without the repository's files.
+is its ``schema_text()``, written by ``scenes/make_scenes.py --schema`` (and printed
+by ``python -m physics schema``; a test keeps the two byte-for-byte equal), so an installed package validates without the repository's files.
 The schema checks structure, types and ranges; what it cannot express
 (convexity, names that refer to each other, the solver's own settings) is
 checked by hand in ``physics/scene/checks.py``.
 """
 from __future__ import annotations
+
+import json
+
+from .. import options
+from ..store import KINDS as _KIND_CODES
 
 FORMAT = "stelkropp.scene"
 VERSION = 1
@@ -18,21 +22,22 @@ SCHEMA_FILE = "stelkropp.schema.json"
 MAX_FILE_BYTES = 50 * 1024 * 1024
 MAX_BODIES = 1_000_000
 
-# the World's own choices (physics/world.py); a test keeps these in step
-INTEGRATORS = ["euler", "symplectic_euler", "rk4"]
-BROADPHASES = ["auto", "sweep", "quadtree", "brute"]
-NARROWPHASES = ["sat", "gjk"]
-KINDS = ["dynamic", "static", "kinematic"]
+# the World's own choices, from the one list of names (physics/options.py)
+SOLVERS = list(options.SOLVERS)
+INTEGRATORS = list(options.INTEGRATORS)
+BROADPHASES = list(options.BROADPHASES)
+NARROWPHASES = list(options.NARROWPHASES)
+KINDS = list(_KIND_CODES)
 
 WORLD_DEFAULTS = {
     "gravity": [0.0, -9.81],
     "dt": 1.0 / 60.0,
-    "solver": "soft_step",
+    "solver": options.DEFAULT_SOLVER,
     "settings": {},
-    "integrator": "symplectic_euler",
+    "integrator": options.DEFAULT_INTEGRATOR,
     "sleeping": True,
-    "broadphase": "auto",
-    "narrowphase": "sat",
+    "broadphase": options.DEFAULT_BROADPHASE,
+    "narrowphase": options.DEFAULT_NARROWPHASE,
 }
 BODY_DEFAULTS = {
     "name": None,
@@ -146,7 +151,7 @@ _WORLD = {
         "gravity": _vec("m/s^2", default=WORLD_DEFAULTS["gravity"]),
         "dt": _num("time step (s)", exclusiveMinimum=0, default=WORLD_DEFAULTS["dt"]),
         "solver": {"type": "string", "default": WORLD_DEFAULTS["solver"],
-                   "description": "solver mode: soft_step, sequential_impulse, impulse, penalty, hybrid "
+                   "description": f"solver mode: {', '.join(SOLVERS)} "
                                   "(checked against the modes this build has)"},
         "settings": {"type": "object", "default": {},
                      "description": "the chosen solver's parameters (names, ranges and defaults are declared by "
@@ -156,8 +161,8 @@ _WORLD = {
         "integrator": {"enum": INTEGRATORS, "default": WORLD_DEFAULTS["integrator"],
                        "description": "used by the modes that integrate forces explicitly"},
         "sleeping": {"type": "boolean", "default": True, "description": "resting islands sleep"},
-        "broadphase": {"enum": BROADPHASES, "default": "auto", "description": "auto picks by body count"},
-        "narrowphase": {"enum": NARROWPHASES, "default": "sat", "description": "polygon-polygon test"},
+        "broadphase": {"enum": BROADPHASES, "default": WORLD_DEFAULTS["broadphase"], "description": "auto picks by body count"},
+        "narrowphase": {"enum": NARROWPHASES, "default": WORLD_DEFAULTS["narrowphase"], "description": "polygon-polygon test"},
     },
 }
 
@@ -203,11 +208,5 @@ SCHEMA = {
 
 def schema_text() -> str:
     """The published schema file's exact text (``scenes/stelkropp.schema.json``)."""
-    import json
     return json.dumps(SCHEMA, indent=2) + "\n"
 
-
-if __name__ == "__main__":  # python -m physics.scene.schema PATH: write the published schema
-    import sys
-    from .json_io import write_atomic
-    write_atomic(sys.argv[1] if len(sys.argv) > 1 else SCHEMA_FILE, schema_text())
