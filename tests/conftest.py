@@ -1,7 +1,9 @@
-"""Shared test setup: the repository root is importable without an install."""
+"""Shared test setup: the repository root is importable without an install, and the tests' own
+helper modules (builders, end_states, extreme_pins, seed_scenes) from every test directory."""
 import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
+for path in (ROOT, ROOT / "tests"):
+    if str(path) not in sys.path:
+        sys.path.insert(0, str(path))

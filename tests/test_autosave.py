@@ -7,6 +7,7 @@ from types import SimpleNamespace
 
 import physics
 from app.autosave import Autosaver
+from builders import ground
 
 
 def document(world, dirty=True, version=1):
@@ -15,7 +16,7 @@ def document(world, dirty=True, version=1):
 
 def small_world():
     w = physics.World()
-    w.add_body(physics.Polygon.box(4, 1), kind="static", position=(0, -0.5), name="ground")
+    ground(w, width=4)
     w.add_body(physics.Polygon.box(1, 1), position=(0.25, 3), name="box")
     return w
 

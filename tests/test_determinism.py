@@ -5,7 +5,6 @@ keys and pairs come out of the broad phase in a fixed order, so nothing
 depends on timing, hashing or thread scheduling: two runs in one process and
 a run in a fresh process must agree to the last bit after 1000 steps.
 """
-import hashlib
 import subprocess
 import sys
 from pathlib import Path
@@ -14,6 +13,7 @@ import numpy as np
 import pytest
 
 import physics
+from builders import container, state_digest
 
 ROOT = Path(__file__).resolve().parent.parent
 STEPS = 1000
@@ -21,9 +21,7 @@ STEPS = 1000
 
 def build(solver: str, sleeping: bool = True) -> physics.World:
     w = physics.World(gravity=(0.0, -10.0), dt=1 / 60, solver=solver, sleeping=sleeping)
-    w.add_body(physics.Polygon.box(30, 1), kind="static", position=(0, -0.5))
-    w.add_body(physics.Polygon.box(1, 8), kind="static", position=(-8, 4))
-    w.add_body(physics.Polygon.box(1, 8), kind="static", position=(8, 4))
+    container(w, width=15, height=8, floor_width=30)
     rng = np.random.default_rng(7)
     bodies = []
     for i in range(60):
@@ -38,15 +36,6 @@ def build(solver: str, sleeping: bool = True) -> physics.World:
     w.add_spring(bodies[0], bodies[1], stiffness=200.0, damping=2.0)
     w.add_spring(bodies[5], None, anchor_b=(0.0, 12.0), stiffness=5e4, damping=10.0)
     return w
-
-
-def state_digest(w: physics.World) -> str:
-    n = w._bodies.n
-    B = w._bodies.view
-    h = hashlib.sha256()
-    for a in (B.x[:n], B.q[:n], B.v[:n], B.w[:n], B.awake[:n]):
-        h.update(np.ascontiguousarray(a).tobytes())
-    return h.hexdigest()
 
 
 def run(solver: str, sleeping: bool = True) -> str:

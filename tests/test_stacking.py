@@ -4,35 +4,19 @@ Reference figures for the top box of the pyramids after 10 s (measured by
 the issue's author): base 20 -- pymunk 0.039 m, pybox2d (Box2D 2.3) 0.26 m,
 Box2D v3.2 0.030 m; base 40 -- pymunk 0.26 m, pybox2d 0.31 m, Box2D v3 0.12 m.
 """
-import math
-
 import numpy as np
 import pytest
 
 import physics
-
-DT = 1 / 60
-G = (0.0, -10.0)
-
-
-def pyramid(base, solver="soft_step", settings=None):
-    """The standard pyramid: row i has base - i boxes, centred, at y = 0.5 + i."""
-    w = physics.World(gravity=G, dt=DT, solver=solver, sleeping=False, settings=settings)
-    w.add_body(physics.Polygon.box(2 * base + 20, 1), kind="static", position=(0, -0.5), friction=0.6)
-    top = None
-    for i in range(base):
-        for j in range(base - i):
-            top = w.add_body(physics.Polygon.box(1, 1), position=(j - (base - i - 1) / 2.0, 0.5 + i), friction=0.6)
-    return w, top
+from builders import DT, container, finite, ground, pyramid_world, rain, rain_sizes, speeds, world
 
 
 def top_drift(base, solver, seconds=10.0):
-    w, top = pyramid(base, solver)
+    w, top = pyramid_world(base, solver)
     p0 = np.array(top.position)
     for _ in range(int(round(seconds / DT))):
         w.step()
-    x = w._bodies.view.x[: w._bodies.n]
-    assert np.all(np.isfinite(x))
+    assert finite(w)
     return float(np.hypot(*(np.array(top.position) - p0)))
 
 
@@ -52,8 +36,8 @@ def test_pyramid_40_soft_step():
 
 
 def test_heavy_box_on_light_box():
-    w = physics.World(gravity=G, dt=DT, sleeping=False)
-    w.add_body(physics.Polygon.box(20, 1), kind="static", position=(0, -0.5), friction=0.6)
+    w = world()
+    ground(w, width=20, name=None)
     light = w.add_body(physics.Polygon.box(1, 1), position=(0, 0.5), density=1.0, friction=0.6)
     heavy = w.add_body(physics.Polygon.box(1, 1), position=(0, 1.5), density=100.0, friction=0.6)
     p0 = np.array(heavy.position)
@@ -66,33 +50,9 @@ def test_heavy_box_on_light_box():
 
 def rain_world(count=1000, seed=3, solver="soft_step", sleeping=True):
     """An open container 40 m wide; boxes of mixed sizes rain in, a row every 12 steps."""
-    w = physics.World(gravity=G, dt=DT, solver=solver, sleeping=sleeping)
-    w.add_body(physics.Polygon.box(42, 1), kind="static", position=(0, -0.5), friction=0.6)
-    w.add_body(physics.Polygon.box(1, 30), kind="static", position=(-20.5, 15), friction=0.6)
-    w.add_body(physics.Polygon.box(1, 30), kind="static", position=(20.5, 15), friction=0.6)
-    rng = np.random.default_rng(seed)
-    sizes = rng.uniform(0.4, 1.2, size=(count, 2))
-    jitter = rng.uniform(-0.2, 0.2, size=count)
-    spin = rng.uniform(-1, 1, size=count)
-    return w, sizes, jitter, spin
-
-
-def rain(w, sizes, jitter, spin, per_row=25, every=12, height=34.0):
-    """Generator: steps the world, adding a row of boxes every ``every`` steps until all are in."""
-    added = []
-    k = 0
-    while len(added) < len(sizes):
-        if k % every == 0:
-            for c in range(per_row):
-                i = len(added)
-                if i >= len(sizes):
-                    break
-                x = -18.5 + 37.0 * c / (per_row - 1) + jitter[i]
-                added.append(w.add_body(physics.Polygon.box(*sizes[i]), position=(x, height), angle=spin[i],
-                                        velocity=(0.0, -5.0), friction=0.6))
-        w.step()
-        k += 1
-        yield added
+    w = world(solver, sleeping=sleeping)
+    container(w, width=40, height=30, names=(None, None, None))
+    return (w, *rain_sizes(count, seed))
 
 
 @pytest.fixture(scope="module")
@@ -121,13 +81,12 @@ def rained():
 def test_rain_1000_boxes_stay_in_container(rained):
     w, boxes, _ = rained
     assert len(boxes) == 1000
-    n = w._bodies.n
-    assert np.all(np.isfinite(w._bodies.view.x[:n])) and np.all(np.isfinite(w._bodies.view.v[:n]))
+    assert finite(w)
     xs = np.array([b.center_of_mass for b in boxes])
     assert np.all(np.abs(xs[:, 0]) < 20.0), "a box escaped through a wall"
     assert np.all(xs[:, 1] > 0.0), "a box fell through the floor"
     assert np.all(xs[:, 1] < 30.0), "a box was thrown out of the container"
-    v = np.hypot(*w._bodies.view.v[:n].T)
+    v = speeds(w)
     assert v.mean() < 0.02 and v.max() < 0.5, "the pile has not come to rest"
 
 

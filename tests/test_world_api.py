@@ -5,13 +5,13 @@ import numpy as np
 import pytest
 
 import physics
+from builders import ground as add_ground
 
 
 def make_world(**kw):
     kw.setdefault("gravity", (0.0, -9.81))
     w = physics.World(**kw)
-    ground = w.add_body(physics.Polygon.box(40, 1), kind="static", position=(0, -0.5), name="ground")
-    return w, ground
+    return w, add_ground(w)
 
 
 def test_contract_names_and_defaults():
@@ -62,6 +62,8 @@ def test_friction_pair_and_combination_rules():
     b = w.add_body(physics.Polygon.box(1, 1), position=(0, 0.49), friction=(0.4, 0.1), restitution=0.7)
     assert b.friction == (0.4, 0.1)
     w.step()
+    # the combined friction and restitution of a contact row are not public (world.contacts() gives
+    # geometry only): read the contact table
     c = w._contacts.cur
     assert w._contacts.n == 1
     assert c.mu_s[0] == pytest.approx(math.sqrt(0.9 * 0.4))
@@ -166,6 +168,7 @@ def test_render_data_is_consistent_with_handles():
     w, ground = make_world()
     b = w.add_body(physics.Polygon.box(1, 2), position=(1, 2), angle=0.3)
     rd = w.render_data()
+    # render_data() is indexed by storage slot, which has no public accessor
     s = w._bodies.slot_of[b.id]
     verts = rd.vertices[rd.vstart[s]: rd.vstart[s] + rd.vcount[s]]
     assert np.allclose(np.sort(verts, axis=0), np.sort(b.world_vertices(), axis=0))
