@@ -60,7 +60,6 @@ def test_cycle_all_modes_every_second_during_pyramid():
         intact = intact and w.solver in STACKING_MODES
 
 
-@pytest.mark.slow
 def test_cycle_stacking_modes_every_second_keeps_pyramid():
     """soft_step <-> sequential_impulse every second for 10 s: no box moves 0.1 m in a step,
     and the pyramid stands (top box within 0.1 m)."""

@@ -20,7 +20,6 @@ def top_drift(base, solver, seconds=10.0):
     return float(np.hypot(*(np.array(top.position) - p0)))
 
 
-@pytest.mark.slow
 @pytest.mark.parametrize("solver,limit", [("soft_step", 0.05), ("sequential_impulse", 0.1)])
 def test_pyramid_20(solver, limit):
     d = top_drift(20, solver)
