@@ -31,22 +31,29 @@ def main(argv=None) -> int:
     args = parse_args(argv)
     import pyglet
     pyglet.options["debug_gl"] = False
+    from .loop import MainLoop
     from .window import Sandbox
     size = tuple(int(v) for v in args.size.lower().split("x"))
     pos = tuple(int(v) for v in args.position.split(",")) if args.position else None
     world = None
     if args.bodies:
-        from .document import bench_world
+        from .scenes import bench_world
         world = bench_world(args.bodies)
-    win = Sandbox(scene=args.scene, world=world, size=size, position=pos, paused=args.paused, status=args.status,
+    win = Sandbox(scene=args.scene, world=world, size=size, position=pos, paused=args.paused,
                   autosave_interval=args.autosave_interval, offer_autosave=not args.no_autosave_offer)
     win.show_ui = not args.hide_ui
-    if args.control:
-        from pathlib import Path
-        win.control_path = Path(args.control)
     win.panels.show_stats = not args.no_stats
-    return win.run(frames=args.frames, screenshot=args.screenshot, exit_after=args.exit,
-                   benchmark=args.benchmark_frames)
+    loop = MainLoop(win)
+    frames = args.frames
+    if frames is None and args.benchmark_frames:
+        frames = args.benchmark_frames + 10
+    if args.status or args.control or args.screenshot or args.exit:
+        from .automation import Automation
+        Automation(args.status, args.control, frames, args.screenshot, args.exit).attach(loop)
+    if args.benchmark_frames:
+        from .benchmark import FrameBenchmark
+        FrameBenchmark(args.benchmark_frames).attach(loop)
+    return loop.run()
 
 
 if __name__ == "__main__":

@@ -104,7 +104,8 @@ class AppProc:
                 return st
             time.sleep(0.1)
         raise AssertionError(f"timed out waiting for {what}; last status: "
-                             f"{ {k: v for k, v in self.status().items() if k != 'bodies'} }\n{self.logtext()}")
+                             f"{ {k: v for k, v in self.status().items() if k != 'bodies'} }\n{self.logtext()}"
+                             f"\n{self.x_state()}")
 
     def wait_ready(self, frames=20):
         st = self.wait(lambda s: s.get("ready"), READY_TIMEOUT, "the kernels to compile")
@@ -115,14 +116,24 @@ class AppProc:
         f0 = self.status().get("frame", 0)
         return self.wait(lambda s: s["frame"] >= f0 + n, 60, f"{n} more frames")
 
+    def settle(self):
+        """Wait until the window has run a whole frame after this call, so input sent before it
+        has been handled.  The status file is written every `status_every` frames, so the write
+        read now may be that many frames old: two periods later a frame that began after this
+        call has certainly ended.  (A person's click lasts several frames; on a loaded machine
+        xdotool's move, press and release would otherwise land in one slow frame.)"""
+        st = self.status()
+        period = st.get("status_every", 5)
+        return self.frames(2 * period)
+
     def xdo(self, *args):
         subprocess.run(["xdotool", *map(str, args)], env=self.env, check=True, timeout=30)
 
     def drag(self, start, end, steps=20, hold=0.0, button=1):
         self.xdo("mousemove", int(start[0]), int(start[1]))
-        time.sleep(0.15)
+        self.settle()
         self.xdo("mousedown", button)
-        time.sleep(0.1)
+        self.settle()
         for i in range(1, steps + 1):
             x = start[0] + (end[0] - start[0]) * i / steps
             y = start[1] + (end[1] - start[1]) * i / steps
@@ -131,9 +142,12 @@ class AppProc:
         time.sleep(hold)
 
     def click(self, x, y):
+        """Move there, press, release: each seen by the window in its own frame."""
         self.xdo("mousemove", int(x), int(y))
-        time.sleep(0.15)
-        self.xdo("click", 1)
+        self.settle()
+        self.xdo("mousedown", 1)
+        self.settle()
+        self.xdo("mouseup", 1)
 
     def key(self, *keys):
         self.xdo("key", *keys)
@@ -147,6 +161,21 @@ class AppProc:
         path = self.tmp / f"{name}.png"
         subprocess.run(["import", "-window", "root", str(path)], env=self.env, check=True, timeout=30)
         return np.asarray(Image.open(path).convert("RGB")).astype(int)
+
+    def x_state(self) -> str:
+        """The pointer and the X windows (for a failure message; the screen is saved as timeout.png)."""
+        out = []
+        for cmd in (["xdotool", "getmouselocation"], ["xwininfo", "-root", "-tree"]):
+            try:
+                r = subprocess.run(cmd, env=self.env, capture_output=True, text=True, timeout=10)
+                out.append(r.stdout.strip()[-2000:])
+            except (OSError, subprocess.SubprocessError) as exc:
+                out.append(f"{cmd[0]}: {exc}")
+        try:
+            subprocess.run(["import", "-window", "root", str(self.tmp / "timeout.png")], env=self.env, timeout=30)
+        except (OSError, subprocess.SubprocessError):
+            pass
+        return "\n".join(out)
 
     def logtext(self):
         self.log.flush()

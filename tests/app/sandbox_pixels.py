@@ -1,4 +1,4 @@
-"""Pixel checks for sandbox screenshots (colours from app/renderer.py)."""
+"""Pixel checks for sandbox screenshots (colours from app/render/colors.py)."""
 from pathlib import Path
 
 import numpy as np
@@ -6,7 +6,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[2]
 
 
-# colours (see app/renderer.py): dynamic fills are blue, static grey-blue, selection orange
+# colours (see app/render/colors.py): dynamic fills are blue, static grey-blue, selection orange
 def body_pixels(img: np.ndarray, x0=360, x1=940) -> int:
     """How many pixels in the scene area (between the panels) look like a drawn body."""
     area = img[:, x0:x1]

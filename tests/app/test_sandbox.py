@@ -124,6 +124,7 @@ def test_bad_file_keeps_scene_and_shows_error(launch, tmp_path):
     before = app.screenshot("before_bad")
     app.send("on_file_drop", 640, 400, [str(bad)])      # as a file dropped on the window
     st = app.wait(lambda s: s["scene_errors"], 20, "the scene error")
+    st = app.settle()               # the error window is placed once imgui knows its size
     assert st["n_bodies"] == n0 and st["path"] == path0
     assert any("bad.json" in line for line in st["scene_errors"])
     img = app.screenshot("after_bad")

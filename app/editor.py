@@ -1,0 +1,220 @@
+"""The editor state: the open document, the selection and hover, the tools, and the edits
+(every change goes through a command, so it can be undone).  No windowing or drawing here."""
+from __future__ import annotations
+
+import numpy as np
+
+import physics
+
+from .commands import AddBody, Group, RemoveBodies, RemoveSpring, SetProperty, SetWorld, body_spec
+from .document import Document
+from .render.decor import Decor
+from .tools import TOOLS, ToolOptions
+
+
+class Editor:
+    """What the user is editing.  ``camera`` is read for on-screen distances (click radii);
+    ``notices`` receives messages.  ``on_document(world, path, keep_camera)`` callbacks run when
+    a new document replaces the current one, ``on_mode(solver, integrator)`` after a mode switch."""
+
+    def __init__(self, world, path, notices, camera):
+        self.notices = notices
+        self.camera = camera
+        self.doc = Document(world, path)
+        self.selection: list = []
+        self.hovered = None
+        self.cursor = np.zeros(2)              # the world point under the pointer (m)
+        self.tool_springs: set[int] = set()    # springs the tools made (the mouse joint): not the user's
+        self.tool_options = ToolOptions()
+        self.tools = {cls.name: cls(self) for cls in TOOLS}
+        self.tool_names = [cls.name for cls in TOOLS]
+        self.tool = self.tools["select"]
+        self.edit_error = ""                   # the last refused edit, shown in the inspector
+        self.on_document: list = []
+        self.on_mode: list = []
+
+    @property
+    def world(self):
+        return self.doc.world
+
+    @property
+    def refs(self):
+        return self.doc.refs
+
+    def notify(self, text, error=False):
+        self.notices.notify(text, error)
+
+    def set_document(self, world, path, keep_camera=False):
+        """Replace the document (open, reset, restore); the history starts empty."""
+        self.tool.cancel()
+        self.tool_springs.clear()
+        self.selection = []
+        self.hovered = None
+        self.doc = Document(world, path)
+        for cb in self.on_document:
+            cb(world, path, keep_camera)
+
+    # -- edits -------------------------------------------------------------------
+    def execute(self, cmd):
+        """Run and record a command; ValueError from the core propagates with nothing changed."""
+        self.doc.history.execute(self, cmd)
+
+    def create(self, cmd):
+        """Run a creating command, select what it made; a refusal becomes a message."""
+        try:
+            self.execute(cmd)
+        except ValueError as exc:
+            self.notify(f"refused: {exc}", error=True)
+            return
+        obj = getattr(cmd, "ref", None)
+        if obj is not None:
+            self.select(obj.obj)
+
+    def set_world(self, label, value, setter, getter) -> bool:
+        """A world-level setting through an undoable command; a refusal is shown, not raised."""
+        try:
+            self.execute(SetWorld(getter, setter, value, label))
+            self.edit_error = ""
+            return True
+        except (ValueError, KeyError) as exc:
+            self.edit_error = str(exc)
+            self.notify(f"refused: {exc}", error=True)
+            return False
+
+    def set_property(self, item, field, value) -> bool:
+        """``item.field = value`` for a body or spring, undoable; a refusal is shown, not raised."""
+        try:
+            self.execute(SetProperty(self, item, field, value))
+            self.edit_error = ""
+            return True
+        except ValueError as exc:
+            self.edit_error = f"refused: {exc}"
+            self.notify(f"{field} {self.edit_error}", error=True)
+            return False
+
+    def drop_shape(self, name, p):
+        """A palette button dropped at world point ``p``: the tool's default body there."""
+        tool = self.tools.get(name)
+        if tool is not None and tool.droppable:
+            tool.drop(p)
+
+    def undo(self):
+        self.tool.cancel()
+        try:
+            label = self.doc.history.undo(self)
+        except ValueError as exc:
+            self.notify(f"undo failed: {exc}", error=True)
+            return
+        self.notify(f"undo: {label}" if label else "nothing to undo")
+
+    def redo(self):
+        self.tool.cancel()
+        try:
+            label = self.doc.history.redo(self)
+        except ValueError as exc:
+            self.notify(f"redo failed: {exc}", error=True)
+            return
+        self.notify(f"redo: {label}" if label else "nothing to redo")
+
+    def delete_selection(self):
+        items = [s for s in self.selection if s.alive]
+        bodies = [s for s in items if isinstance(s, physics.Body)]
+        springs = [s for s in items if isinstance(s, physics.Spring) and not any(
+            s.body_a is b or s.body_b is b for b in bodies)]
+        cmds = [RemoveSpring(self, s) for s in springs]
+        if bodies:
+            cmds.append(RemoveBodies(self, bodies))
+        if cmds:
+            self.tool.cancel()
+            self.execute(Group(cmds, "delete") if len(cmds) > 1 else cmds[0])
+
+    def duplicate_selection(self):
+        bodies = [s for s in self.selection if isinstance(s, physics.Body) and s.alive]
+        if not bodies:
+            return
+        cmds = []
+        for b in bodies:
+            spec = body_spec(b)
+            spec["name"] = None
+            spec["position"] = (spec["position"][0] + 0.6, spec["position"][1] + 0.6)
+            cmds.append(AddBody(spec, "duplicate"))
+        self.execute(Group(cmds, "duplicate"))
+        self.selection = [c.ref.obj for c in cmds]
+
+    def toggle_static(self):
+        bodies = [s for s in self.selection if isinstance(s, physics.Body) and s.alive]
+        if bodies:
+            self.tool.cancel()
+            cmds = [SetProperty(self, b, "kind", "dynamic" if b.kind != "dynamic" else "static") for b in bodies]
+            self.execute(Group(cmds, "toggle static/dynamic"))
+
+    def switch_solver(self, mode):
+        w = self.world
+
+        def setter(m):
+            w.solver = m
+        try:
+            self.execute(SetWorld(lambda: w.solver, setter, mode, "solver"))
+        except (ValueError, ImportError) as exc:
+            self.notify(f"solver {mode}: {exc}", error=True)
+            return
+        for cb in self.on_mode:
+            cb(mode, w.integrator)
+        self.notify(f"solver: {mode}")
+
+    # -- selection and tools -----------------------------------------------------------
+    def select(self, item, add=False):
+        """Select ``item`` (None: nothing); ``add`` toggles it in the current selection."""
+        if item is None:
+            self.selection = []
+        elif add:
+            if item in self.selection:
+                self.selection.remove(item)
+            else:
+                self.selection.append(item)
+        else:
+            self.selection = [item]
+        self.edit_error = ""
+
+    def deselect(self, item):
+        self.selection = [s for s in self.selection if s is not item]
+        if self.hovered is item:
+            self.hovered = None
+
+    def is_tool_spring(self, sp) -> bool:
+        return sp.id in self.tool_springs
+
+    def spring_near(self, p, px=7.0):
+        """The user's spring closest to world point ``p`` within ``px`` screen pixels, or None."""
+        springs = [s for s in self.world.springs if s.id not in self.tool_springs]
+        best, bd = None, px / self.camera.scale
+        p = np.asarray(p)
+        for sp in springs:
+            a, b = (np.array(e) for e in sp.endpoints())
+            d = b - a
+            t = np.clip(np.dot(p - a, d) / max(np.dot(d, d), 1e-12), 0, 1)
+            dist = np.hypot(*(a + t * d - p))
+            if dist < bd:
+                best, bd = sp, dist
+        return best
+
+    def set_tool(self, name):
+        if self.tool.name != name:
+            self.tool.cancel()
+            self.tool = self.tools[name]
+
+    def decor(self) -> Decor:
+        """Selection, hover and the active tool's previews for this frame's drawing."""
+        d = Decor()
+        for s in self.selection:
+            if not s.alive:
+                continue
+            if isinstance(s, physics.Body):
+                d.selected_bodies.add(s.id)
+            else:
+                d.selected_springs.add(s.id)
+        if self.hovered is not None and self.hovered.alive:
+            d.hovered_body = self.hovered.id
+        d.hidden_springs |= self.tool_springs
+        self.tool.decorate(d, tuple(self.cursor))
+        return d

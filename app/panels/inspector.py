@@ -1,0 +1,110 @@
+"""Inspector section: every property of the selected body or spring, edited live (undoable)."""
+from __future__ import annotations
+
+import math
+
+from imgui_bundle import imgui
+
+import physics
+
+from .base import Section, record
+from .style import DIM, ENTER, RED
+
+
+class InspectorSection(Section):
+    title = "Inspector"
+
+    def draw(self):
+        app, ed = self.app, self.app.editor
+        sel = [s for s in ed.selection if s.alive]
+        if not sel:
+            imgui.text_colored(DIM, "Nothing selected: click a body or a spring.")
+            return
+        if len(sel) > 1:
+            imgui.text(f"{len(sel)} items selected")
+        item = sel[-1]
+        if isinstance(item, physics.Body):
+            self.body(item)
+        else:
+            self.spring(item)
+        if ed.edit_error:
+            imgui.push_text_wrap_pos(0)
+            imgui.text_colored(RED, ed.edit_error)
+            imgui.pop_text_wrap_pos()
+            record(app, "inspector:error")
+        if imgui.button("Delete (Del)"):
+            ed.delete_selection()
+        imgui.same_line()
+        if imgui.button("Duplicate (Ctrl+D)"):
+            ed.duplicate_selection()
+        if isinstance(item, physics.Body):
+            imgui.same_line()
+            if imgui.button("Static/Dynamic (T)"):
+                ed.toggle_static()
+
+    def edit(self, item, field, value):
+        self.app.editor.set_property(item, field, value)
+
+    def body(self, b):
+        shape = b.shape
+        desc = f"circle r={shape.radius:.3g}" if isinstance(shape, physics.Circle) else \
+            f"polygon, {len(shape.vertices)} vertices"
+        imgui.text(f"Body {b.name or b.id}: {desc}")
+        imgui.text_colored(DIM, f"mass {b.mass:.4g} kg   inertia {b.inertia:.4g}   {'awake' if b.awake else 'asleep'}")
+        kinds = ["dynamic", "static", "kinematic"]
+        ch, k = imgui.combo("kind", kinds.index(b.kind), kinds)
+        if ch:
+            self.edit(b, "kind", kinds[k])
+        ch, v = imgui.input_float2("position", list(b.position), "%.3f", ENTER)
+        if ch:
+            self.edit(b, "position", tuple(v))
+        ch, v = imgui.input_float("angle (deg)", math.degrees(b.angle), 5.0, 45.0, "%.2f", ENTER)
+        if ch:
+            self.edit(b, "angle", math.radians(v))
+        ch, v = imgui.input_float2("velocity", list(b.velocity), "%.3f", ENTER)
+        if ch:
+            self.edit(b, "velocity", tuple(v))
+        ch, v = imgui.input_float("angular vel.", b.angular_velocity, 0.5, 5.0, "%.3f", ENTER)
+        if ch:
+            self.edit(b, "angular_velocity", v)
+        ch, v = imgui.input_float("density", b.density, 0.1, 1.0, "%.3f", ENTER)
+        record(self.app, "inspector:density")
+        if ch:
+            self.edit(b, "density", v)
+        ch, v = imgui.input_float("restitution", b.restitution, 0.05, 0.2, "%.3f", ENTER)
+        if ch:
+            self.edit(b, "restitution", v)
+        ch, v = imgui.input_float("static friction", b.static_friction, 0.05, 0.2, "%.3f", ENTER)
+        if ch:
+            self.edit(b, "friction", (v, b.dynamic_friction))
+        ch, v = imgui.input_float("dynamic friction", b.dynamic_friction, 0.05, 0.2, "%.3f", ENTER)
+        if ch:
+            self.edit(b, "friction", (b.static_friction, v))
+        ch, v = imgui.input_text("name", b.name or "", ENTER)
+        if ch:
+            self.edit(b, "name", v or None)
+
+    def spring(self, sp):
+        a = sp.body_a.name or sp.body_a.id
+        bname = "world" if sp.body_b is None else (sp.body_b.name or sp.body_b.id)
+        imgui.text(f"Spring {sp.name or sp.id}: {a} - {bname}")
+        imgui.text_colored(DIM, f"length {sp.length:.3f} m")
+        ch, v = imgui.input_float("stiffness", sp.stiffness, 10.0, 100.0, "%.2f", ENTER)
+        if ch:
+            self.edit(sp, "stiffness", v)
+        ch, v = imgui.input_float("damping", sp.damping, 0.1, 1.0, "%.3f", ENTER)
+        if ch:
+            self.edit(sp, "damping", v)
+        ch, v = imgui.input_float("rest length", sp.rest_length, 0.1, 1.0, "%.3f", ENTER)
+        if ch:
+            self.edit(sp, "rest_length", v)
+        ch, v = imgui.input_float2("anchor a (local)", list(sp.anchor_a), "%.3f", ENTER)
+        if ch:
+            self.edit(sp, "anchor_a", tuple(v))
+        label = "anchor b (world)" if sp.body_b is None else "anchor b (local)"
+        ch, v = imgui.input_float2(label, list(sp.anchor_b), "%.3f", ENTER)
+        if ch:
+            self.edit(sp, "anchor_b", tuple(v))
+        ch, v = imgui.input_text("name##spring", sp.name or "", ENTER)
+        if ch:
+            self.edit(sp, "name", v or None)

@@ -1,0 +1,58 @@
+"""Floating text: the message strip at the bottom of the scene, the compile note at its top, and
+the compile progress window shown until the open scene's kernels are ready."""
+from __future__ import annotations
+
+import time
+
+from imgui_bundle import imgui
+
+from .style import AMBER, DIM, GREEN, PANEL_W, RED
+
+NOTE_FLAGS = (imgui.WindowFlags_.no_decoration | imgui.WindowFlags_.always_auto_resize |
+              imgui.WindowFlags_.no_inputs | imgui.WindowFlags_.no_saved_settings).value
+
+
+def messages(app):
+    """The last five messages younger than six seconds (errors red); clicks pass through."""
+    msgs = app.notices.recent(6.0)
+    if not msgs:
+        return
+    io = imgui.get_io()
+    imgui.set_next_window_pos(imgui.ImVec2(io.display_size.x * 0.5 + PANEL_W * 0.5, io.display_size.y - 12),
+                              imgui.Cond_.always.value, imgui.ImVec2(0.5, 1.0))
+    imgui.set_next_window_bg_alpha(0.85)
+    flags = (imgui.WindowFlags_.no_decoration | imgui.WindowFlags_.always_auto_resize |
+             imgui.WindowFlags_.no_saved_settings | imgui.WindowFlags_.no_focus_on_appearing |
+             imgui.WindowFlags_.no_nav | imgui.WindowFlags_.no_inputs).value
+    imgui.begin("##messages", None, flags)
+    for text, error, _ in msgs[-5:]:
+        imgui.text_colored(RED if error else GREEN, text)
+    imgui.end()
+
+
+def overlay_note(text):
+    """One amber line at the top of the scene (e.g. a mode still compiling)."""
+    io = imgui.get_io()
+    imgui.set_next_window_pos(imgui.ImVec2(io.display_size.x * 0.5 + PANEL_W * 0.5, 14),
+                              imgui.Cond_.always.value, imgui.ImVec2(0.5, 0.0))
+    imgui.begin("##note", None, NOTE_FLAGS)
+    imgui.text_colored(AMBER, text)
+    imgui.end()
+
+
+def progress_window(app):
+    """The compile progress of the open scene's kernels, centred."""
+    io = imgui.get_io()
+    w, h = io.display_size.x, io.display_size.y
+    imgui.set_next_window_pos(imgui.ImVec2(w * 0.5, h * 0.5), imgui.Cond_.always.value, imgui.ImVec2(0.5, 0.5))
+    imgui.set_next_window_size(imgui.ImVec2(460, 0), imgui.Cond_.always.value)
+    flags = (imgui.WindowFlags_.no_decoration | imgui.WindowFlags_.no_move |
+             imgui.WindowFlags_.no_saved_settings).value
+    imgui.begin("##progress", None, flags)
+    imgui.text("Stelkropp")
+    imgui.text_colored(DIM, "Compiling the physics kernels (first launch only) ...")
+    frac, label = app.warmup.progress()
+    dots = "." * (1 + int(time.monotonic() * 2) % 3)
+    imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")
+    imgui.text_colored(DIM, f"{label}{dots}  ({app.warmup.elapsed():.0f} s)")
+    imgui.end()

@@ -1,0 +1,100 @@
+"""Solver section: the mode and its settings, integrator, broad and narrow phase, sleeping."""
+from __future__ import annotations
+
+from imgui_bundle import imgui
+
+from physics import options
+
+from .base import Section, record
+from .style import DIM
+
+WORLD_CHOICES = (("integrator", "integrator", options.INTEGRATORS),
+                 ("broad phase", "broadphase", options.BROADPHASES),
+                 ("narrow phase", "narrowphase", options.NARROWPHASES))
+
+
+def mode_description(mode: str) -> str:
+    """The solver mode's one-line summary from ``physics.options`` (its own description if the
+    core has no summary), or ''."""
+    summary = getattr(options, "SOLVER_SUMMARIES", {}).get(mode)
+    if summary:
+        return summary
+    try:
+        from physics import solvers as _s  # description only (read-only)
+        return _s.get(mode).description
+    except Exception:  # noqa: BLE001
+        return ""
+
+
+def setting_widget(label, decl, val):
+    """The widget for one declared solver setting: (changed, value)."""
+    if isinstance(decl.default, bool):
+        return imgui.checkbox(label, val)
+    if isinstance(decl.default, str):
+        choices = list(decl.choices)
+        ch, idx = imgui.combo(label, choices.index(val) if val in choices else 0, choices)
+        return ch, choices[idx]
+    if isinstance(decl.default, int):
+        lo = int(decl.lo) if decl.lo is not None else 0
+        hi = int(decl.hi) if decl.hi is not None else max(100, 4 * int(decl.default))
+        return imgui.slider_int(label, int(val), lo, hi)
+    lo = float(decl.lo) if decl.lo is not None else 0.0
+    hi = float(decl.hi) if decl.hi is not None else max(1.0, 4 * float(decl.default))
+    flags = imgui.SliderFlags_.logarithmic.value if lo > 0 and hi / lo > 100 else 0
+    return imgui.slider_float(label, float(val), lo, hi, "%.4g", flags)
+
+
+class SolverSection(Section):
+    title = "Solver"
+
+    def draw(self):
+        app, ed = self.app, self.app.editor
+        w = app.world
+        opened = imgui.begin_combo("mode", w.solver)
+        record(app, "solver_combo")
+        if opened:
+            for m in w.solvers:
+                clicked, _ = imgui.selectable(m, m == w.solver)
+                record(app, f"solver:{m}")
+                if clicked and m != w.solver:
+                    ed.switch_solver(m)
+            imgui.end_combo()
+        desc = mode_description(w.solver)
+        if desc:
+            imgui.push_text_wrap_pos(0)
+            imgui.text_colored(DIM, desc)
+            imgui.pop_text_wrap_pos()
+        self.settings(w)
+        for label, attr, choices in WORLD_CHOICES:
+            opts = list(choices)
+            cur = getattr(w, attr)
+            ch, k = imgui.combo(label, opts.index(cur) if cur in opts else 0, opts)
+            if ch:
+                ed.set_world(attr, opts[k], lambda v, a=attr: setattr(w, a, v), lambda a=attr: getattr(w, a))
+        ch, v = imgui.checkbox("sleeping", w.sleeping)
+        if ch:
+            ed.set_world("sleeping", v, lambda x: setattr(w, "sleeping", x), lambda: w.sleeping)
+        info = app.sampler.info
+        if info.get("stages"):
+            imgui.push_text_wrap_pos(0)
+            imgui.text_colored(DIM, "stages: " + " > ".join(info["stages"]))
+            imgui.pop_text_wrap_pos()
+
+    def set_setting(self, w, name, value):
+        mode = w.solver
+        self.app.editor.set_world(f"{mode}.{name}", value,
+                                  lambda x, m=mode, n=name: w.settings_for(m).__setitem__(n, x),
+                                  lambda m=mode, n=name: w.settings_for(m)[n])
+
+    def settings(self, w):
+        settings = w.settings
+        for name, decl in settings.declared().items():
+            ch, v = setting_widget(f"{name}##{w.solver}", decl, settings[name])
+            if decl.doc and imgui.is_item_hovered():
+                imgui.set_tooltip(decl.doc)
+            if ch:
+                self.set_setting(w, name, v)
+        if imgui.button("Defaults##solver"):
+            for name, decl in settings.declared().items():
+                if settings[name] != decl.default:
+                    self.set_setting(w, name, decl.default)

@@ -1,0 +1,79 @@
+"""Tools section: one button per tool (drag a droppable tool's button into the scene to drop a
+body), the active tool's help, and the palette options for new bodies."""
+from __future__ import annotations
+
+from imgui_bundle import imgui
+
+from .base import Section
+from .style import DIM
+
+
+class ToolsSection(Section):
+    title = "Tools"
+
+    def __init__(self, app):
+        super().__init__(app)
+        self.palette_drag = None     # the tool whose button is being dragged into the scene
+
+    def draw(self):
+        ed = self.app.editor
+        for i, name in enumerate(ed.tool_names):
+            if i % 3:
+                imgui.same_line()
+            active = ed.tool.name == name
+            if active:
+                imgui.push_style_color(imgui.Col_.button.value, imgui.ImVec4(0.85, 0.55, 0.2, 0.9))
+            if imgui.button(f"{name}##tool", imgui.ImVec2(100, 0)):
+                ed.set_tool(name)
+            if active:
+                imgui.pop_style_color()
+            if ed.tools[name].droppable:
+                if imgui.begin_drag_drop_source():
+                    imgui.set_drag_drop_payload_py_id("STELK_SHAPE", i)
+                    imgui.text(f"drop a {name} into the scene")
+                    imgui.end_drag_drop_source()
+                    self.palette_drag = name
+        imgui.push_text_wrap_pos(0)
+        imgui.text_colored(DIM, ed.tool.help)
+        imgui.text_colored(DIM, "Drag box / n-gon / circle buttons into the scene to drop one.")
+        imgui.pop_text_wrap_pos()
+        self.options(ed.tool_options)
+
+    @staticmethod
+    def options(o):
+        kinds = ["dynamic", "static", "kinematic"]
+        ch, k = imgui.combo("new body kind", kinds.index(o.kind), kinds)
+        if ch:
+            o.kind = kinds[k]
+        ch, v = imgui.slider_int("n-gon sides", o.sides, 3, 12)
+        if ch:
+            o.sides = v
+        ch, v = imgui.slider_float("click size (m)", o.default_size, 0.2, 5.0, "%.2f")
+        if ch:
+            o.default_size = v
+        ch, v = imgui.slider_float("restitution##new", o.restitution, 0.0, 1.0, "%.2f")
+        if ch:
+            o.restitution = v
+        ch, v = imgui.slider_float("spring k##new", o.spring_stiffness, 1.0, 2000.0, "%.0f",
+                                   imgui.SliderFlags_.logarithmic.value)
+        if ch:
+            o.spring_stiffness = v
+        ch, v = imgui.slider_float("mouse joint Hz", o.joint_hertz, 0.5, 20.0, "%.1f")
+        if ch:
+            o.joint_hertz = v
+
+    def drop(self):
+        """A palette button dragged out of the panels and released over the scene drops a body there
+        (called after every window is drawn, so 'over a window' is this frame's answer)."""
+        if self.palette_drag is None:
+            return
+        if imgui.is_mouse_released(0):
+            name = self.palette_drag
+            self.palette_drag = None
+            if not imgui.is_window_hovered(imgui.HoveredFlags_.any_window.value):
+                mp = imgui.get_mouse_pos()
+                h = imgui.get_io().display_size.y
+                app = self.app
+                app.editor.drop_shape(name, app.camera.to_world(mp.x, h - mp.y))
+        elif not imgui.is_mouse_down(0):
+            self.palette_drag = None

@@ -1,0 +1,32 @@
+"""Colours of the scene by body state, overlays and previews (RGBA float32)."""
+from __future__ import annotations
+
+import numpy as np
+
+F32 = np.float32
+
+
+def _rgba(hexstr: str, a: float = 1.0) -> np.ndarray:
+    h = hexstr.lstrip("#")
+    return np.array([int(h[i:i + 2], 16) / 255.0 for i in (0, 2, 4)] + [a], dtype=F32)
+
+
+# colours by state (fill, outline)
+DYNAMIC_FILLS = np.stack([_rgba(c) for c in ("#4f8fd6", "#5aa2e0", "#4a7fc9", "#62a8d8", "#5891e3", "#4c9ac8")])
+STATIC_FILL, STATIC_LINE = _rgba("#4a5361"), _rgba("#8a97a8")
+KINEMATIC_FILL, KINEMATIC_LINE = _rgba("#8f6bd1"), _rgba("#d4c2f5")
+SLEEP_FILL = _rgba("#44617f")
+DYNAMIC_LINE = _rgba("#d8ecff")
+SLEEP_LINE = _rgba("#8ea4bb")
+SELECT_FILL, SELECT_LINE = _rgba("#f0a040"), _rgba("#fff2c0")
+HOVER_TINT = 0.22
+SPRING_COLOR = _rgba("#e8c45a")
+SPRING_SELECTED = _rgba("#fff2c0")
+CONTACT_COLOR = _rgba("#ff5a5a")
+NORMAL_COLOR = _rgba("#ffd05a")
+AABB_COLOR = _rgba("#7fe0a0", 0.55)
+QUADTREE_COLOR = _rgba("#c890ff", 0.45)
+VEL_COLOR = _rgba("#6df0ff", 0.9)
+COM_COLOR = _rgba("#ffffff")
+COM_EDGE = _rgba("#202020")
+PREVIEW_COLOR = _rgba("#ffffff", 0.85)

@@ -1,0 +1,25 @@
+"""What to draw besides the bodies: the overlay switches and this frame's decorations."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+@dataclass
+class Overlays:
+    contacts: bool = False
+    aabbs: bool = False
+    quadtree: bool = False
+    velocities: bool = False
+    com: bool = False
+    springs: bool = True
+
+
+@dataclass
+class Decor:
+    """Extra things to draw this frame (tool previews, mouse joint, selection)."""
+    selected_bodies: set = field(default_factory=set)   # body ids
+    hovered_body: int | None = None
+    selected_springs: set = field(default_factory=set)  # spring ids
+    hidden_springs: set = field(default_factory=set)    # spring ids drawn as plain lines (mouse joint)
+    segments: list = field(default_factory=list)        # (p0, p1, width_px, rgba)
+    points: list = field(default_factory=list)          # (p, radius_px, rgba)

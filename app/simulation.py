@@ -1,0 +1,128 @@
+"""Running the world: play/pause, the fixed-timestep accumulator, stepping under the physics lock
+(the background compiler holds it while it warms kernels), faults, and the per-frame arrays the
+velocity and quadtree overlays need."""
+from __future__ import annotations
+
+import threading
+import time
+
+import numpy as np
+
+import physics
+
+MAX_STEPS_PER_FRAME = 4
+
+
+class Simulation:
+    """Steps ``editor.world`` while ``running``; ``time_scale`` is simulated seconds per real second."""
+
+    def __init__(self, editor, warmup, notices, paused=False, lock=None):
+        self.editor = editor
+        self.warmup = warmup
+        self.notices = notices
+        self.running = not paused
+        self.time_scale = 1.0
+        self.accumulator = 0.0
+        self.fault = None
+        self.lock = lock if lock is not None else threading.Lock()   # shared with the warmup thread
+        self.compiling_note = ""
+        self.quadtree = np.zeros((0, 4))       # the last quadtree cells drawn (overlay Q)
+        self.velocities = None                 # (N, 2) body velocities for the arrows (overlay V)
+        self._vel_key = None
+
+    def reset(self):
+        """A new document: no fault, nothing owed to the accumulator, no stale arrows."""
+        self.fault = None
+        self.accumulator = 0.0
+        self.velocities = self._vel_key = None
+
+    def toggle_run(self):
+        self.running = not self.running
+        if self.running:
+            self.fault = None
+
+    def step_once(self):
+        self.running = False
+        self.step(1)
+
+    def step(self, n) -> float:
+        """Take n steps if the kernels are ready and the lock is free; returns ms spent."""
+        w = self.editor.world
+        if not self.warmup.can_step(w.solver, w.integrator):
+            self.compiling_note = f"compiling {w.solver} ({w.integrator}) ..."
+            return 0.0
+        if not self.lock.acquire(blocking=False):
+            self.compiling_note = "compiling kernels ..."
+            return 0.0
+        self.compiling_note = ""
+        t0 = time.perf_counter()
+        try:
+            for _ in range(n):
+                self.editor.tool.update(self.editor.cursor)
+                w.step()
+        except physics.SimulationError as exc:
+            self.fault = str(exc)
+            self.running = False
+            self.notices.notify(f"simulation error (world reverted, paused): {exc}", error=True)
+        finally:
+            self.lock.release()
+        return (time.perf_counter() - t0) * 1e3
+
+    def advance(self, real_dt, velocities=False):
+        """Steps owed for ``real_dt`` real seconds (at most MAX_STEPS_PER_FRAME: slow motion rather
+        than a spiral when we cannot keep up).  Returns (physics ms, steps taken)."""
+        w = self.editor.world
+        phys_ms = 0.0
+        steps = 0
+        if self.running:
+            self.accumulator += min(real_dt, 0.25) * self.time_scale
+            steps = int(self.accumulator / w.dt)
+            if steps > MAX_STEPS_PER_FRAME:
+                steps = MAX_STEPS_PER_FRAME
+                self.accumulator = 0.0
+            else:
+                self.accumulator -= steps * w.dt
+            if steps:
+                if velocities:
+                    before = w.render_data()
+                    x0, ids0, t0 = before.center.copy(), before.ids.copy(), w.time
+                phys_ms = self.step(steps)
+                if velocities:
+                    # the arrows: each body's displacement over this frame's steps / the time
+                    # stepped, from the render arrays (no per-body Python handles)
+                    after = w.render_data()
+                    if w.time > t0 and np.array_equal(after.ids, ids0):
+                        self.velocities = (after.center - x0) / (w.time - t0)
+                        self._vel_key = ("stepped", self.editor.doc.history.version, w.steps, len(ids0))
+                    else:
+                        self.velocities = None
+        return phys_ms, steps
+
+    def body_velocities(self, rd):
+        """Velocities for the arrow overlay, in render-data order.  While running, the displacement
+        over the frame's steps (see ``advance``); when nothing stepped (paused, or a body was just
+        added/removed), read through the body handles once per change of the world -- that is the
+        only case that touches Python objects per body, and it does not repeat every frame."""
+        w = self.editor.world
+        version = self.editor.doc.history.version
+        if self._vel_key is not None and self._vel_key[0] == "stepped" and \
+                self._vel_key[1:] == (version, w.steps, len(rd.ids)):
+            return self.velocities
+        key = ("handles", version, w.steps, rd.ids.tobytes())
+        if key != self._vel_key or self.velocities is None:
+            self.velocities = np.array([b.velocity for b in w.bodies], dtype=np.float64).reshape(-1, 2)
+            self._vel_key = key
+        return self.velocities
+
+    def quadtree_cells(self, on_error):
+        """``world.quadtree_cells()`` for the overlay (Q).  It shares the broad phase's scratch
+        buffers with stepping, so it runs under the physics lock; while a background compile holds
+        the lock, the last cells are drawn again.  ``on_error(exc)`` turns the overlay off."""
+        if self.lock.acquire(blocking=False):
+            try:
+                self.quadtree = self.editor.world.quadtree_cells()
+            except Exception as exc:  # noqa: BLE001  (a debug overlay must not take the sandbox down)
+                on_error(exc)
+            finally:
+                self.lock.release()
+        return self.quadtree
