@@ -179,3 +179,26 @@ def test_chain_ground_is_smooth_and_one_sided():
         sim.step()
         vmax = max(vmax, abs(sim.state()[2][1, 1]))
     assert vmax < 0.01 and sim.origins()[1, 0] == pytest.approx(-5.0 + 5.0 * 1.5, rel=1e-3)
+
+
+# bodies, shapes, joints that shared/benchmarks.c creates (dynamic + static bodies; a chain of n
+# points in a loop is n segment shapes); rain: its static ground before the first ragdolls fall
+BENCHMARKS_C = {"large_pyramid": (5051, 5051, 0), "many_pyramids": (22001, 22020, 0), "smash": (9601, 9601, 0),
+                "joint_grid": (10000, 10000, 19800), "spinner": (6078, 6076 + 1 + 360, 1),
+                "tumbler": (2026, 2029, 1), "washer": (8101, 8140, 0), "junkyard": (8002, 8262, 0),
+                "compounds": (3001, 6282, 0), "rain": (1, 2505, 0)}
+
+
+@pytest.mark.parametrize("name", ["tumbler", "spinner", "washer", "compounds", "rain", "large_pyramid"])
+def test_suite_scenes_build_what_benchmarks_c_builds(name):
+    sim = Box2DV3Sim(SUITE[name](), sleeping=None)
+    c = sim.counters()
+    bodies, shapes, joints = BENCHMARKS_C[name]
+    assert (c["bodies"] - 1, c["shapes"], c["joints"]) == (bodies, shapes, joints)  # - the shim's ground
+
+
+def test_every_sample_builds_and_steps():
+    for name, make in SAMPLES.items():
+        sim = Box2DV3Sim(make())
+        sim.run(2)
+        assert np.isfinite(sim.state()[0]).all(), name

@@ -82,7 +82,8 @@ def write(figs, out):
         for key in ("ideal", "issue_18_quotes", "issue_14_quotes", "issue_18_target"):
             if key in ref:
                 extra += f" ({key.replace('_', ' ')}: {_fmt(ref[key]) if not isinstance(ref[key], str) else ref[key]})"
-        lines.append(f"| `{f['id']}` | {_fmt(f['value'])} | {f['unit']} | {f['definition']}{extra} |")
+        text = (f["definition"] + extra).replace("|", "\\|")  # a literal bar inside a table cell
+        lines.append(f"| `{f['id']}` | {_fmt(f['value'])} | {f['unit']} | {text} |")
     out.with_suffix(".md").write_text("\n".join(lines) + "\n")
 
 

@@ -25,7 +25,7 @@ def mass_ratio_1000():
     return scene("1000:1 stack", "1000 kg box on a 1 kg box", bodies, gravity=(0.0, -9.81))
 
 
-def restitution_drop(height, corner=False, e=0.5):
+def restitution_drop(height=1.0, corner=False, e=0.5):
     """A 1 x 1 box (e = 0.5, friction 0.6) released at rest with its lowest point ``height`` above a
     static ground (e = 0: a contact uses the max, 0.5); ``corner``: turned 45 degrees, so it lands on a
     corner straight below its centre of mass (no torque at impact: the ideal rise is still e^2 h)."""
