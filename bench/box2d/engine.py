@@ -57,6 +57,7 @@ class Box2DV3Sim(refs.Sim):
         if not self._w:
             raise RuntimeError("s2_world_create failed")
         self.names = {}
+        self._kinds = [b.get("kind", "dynamic") for b in desc.get("bodies", [])]
         self._exec(bodies_records(desc.get("bodies", []), 0, self.names))
         self.n_desc = self.lib.s2_body_count(self._w)
         self._refresh_mass()
@@ -102,6 +103,7 @@ class Box2DV3Sim(refs.Sim):
                 recs.append([L.OP_DESTROY_BODY, self.names.pop(name)[0]])
             bodies = e.get("add", {}).get("bodies", [])
             recs += bodies_records(bodies, slot, self.names, "bench.events.add.bodies")
+            self._kinds += [b.get("kind", "dynamic") for b in bodies]
             slot += len(bodies)
             jrecs, kinds = joints_records(e.get("add", {}).get("joints", []), self.names, "bench.events.add.joints")
             self.joint_names += [j.get("name") for j in e.get("add", {}).get("joints", [])]
@@ -121,8 +123,7 @@ class Box2DV3Sim(refs.Sim):
         m = np.zeros((n, L.MASS_READ))
         self.lib.s2_read_mass(self._w, L.as_ptr(m), n)
         self._mass = m
-        types = [b.get("kind", "dynamic") for b in self.desc.get("bodies", [])]
-        self.dynamic = np.array([t == "dynamic" for t in types] + [True] * (n - len(types)), dtype=bool)
+        self.dynamic = np.array([k == "dynamic" for k in self._kinds[:n]], dtype=bool)
         self.masses = np.nan_to_num(m[:, 0])
 
     # -- stepping ---------------------------------------------------------------------------
@@ -190,7 +191,8 @@ class Box2DV3Sim(refs.Sim):
 
     def kinetic_energy(self):
         """Total kinetic energy (J) of the dynamic bodies, with Box2D's masses and inertias."""
-        self._refresh_mass() if len(self._mass) != self.lib.s2_body_count(self._w) else None
+        if len(self._mass) != self.lib.s2_body_count(self._w):
+            self._refresh_mass()  # events added bodies since
         _, _, v, w = self.state()
         d = self.dynamic & np.isfinite(w)
         m, inert = self._mass[:, 0], self._mass[:, 1]
@@ -235,7 +237,9 @@ class Box2DV3Sim(refs.Sim):
     @property
     def recs(self):
         """bench/refs.py's per-body records (physics shapes), for version-1 descriptions only."""
-        return refs._bodies(self.desc)
+        if getattr(self, "_recs", None) is None:
+            self._recs = refs._bodies(self.desc)
+        return self._recs
 
     def close(self):
         """Destroy the Box2D world (also done when the Sim is garbage collected)."""
