@@ -1,4 +1,4 @@
-"""``Box2DV3Sim``: Box2D v3 itself running a bench scene description, behind bench/refs.py's ``Sim``.
+"""``Box2DV3Sim``: Box2D v3 itself running a bench scene description, behind the bench's ``Sim``.
 
     sim = Box2DV3Sim(desc, threads=1, substeps=4, sleeping=False)
     for _ in range(600):
@@ -19,7 +19,8 @@ import math
 
 import numpy as np
 
-from .. import refs
+from ..desc import body_records
+from ..engines.base import Sim
 from . import lib as L
 from .scene import bodies_records, joints_records, springs_records, world_params
 
@@ -30,8 +31,8 @@ def _flat(records):
     return np.fromiter(itertools.chain.from_iterable(records), dtype=np.float64)
 
 
-class Box2DV3Sim(refs.Sim):
-    """One Box2D v3 world built from ``desc``; the ``Sim`` interface of bench/refs.py.
+class Box2DV3Sim(Sim):
+    """One Box2D v3 world built from ``desc``; the ``Sim`` interface of bench/engines/base.py.
 
     threads: Box2D workers (1 = serial); scheduler: "shim" (our pthread task system behind
     ``enqueueTask``/``finishTask``) or "box2d" (Box2D's built-in one, as its benchmark app uses);
@@ -52,6 +53,7 @@ class Box2DV3Sim(refs.Sim):
         if substeps is None:
             substeps = int((w.get("settings") or {}).get("substeps", 4))
         self.substeps, self.threads, self.scheduler = int(substeps), int(threads), scheduler
+        self.settings_label = f"{self.substeps} sub-steps, {self.threads} thread(s)"
         p = np.array(world_params(desc, sleeping, self.threads, scheduler, track_angles))
         self._w = self.lib.s2_world_create(L.as_ptr(p), len(p))
         if not self._w:
@@ -236,9 +238,9 @@ class Box2DV3Sim(refs.Sim):
 
     @property
     def recs(self):
-        """bench/refs.py's per-body records (physics shapes), for version-1 descriptions only."""
+        """bench/desc.py's per-body records (physics shapes), for version-1 descriptions only."""
         if getattr(self, "_recs", None) is None:
-            self._recs = refs._bodies(self.desc)
+            self._recs = body_records(self.desc)
         return self._recs
 
     def close(self):

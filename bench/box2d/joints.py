@@ -20,7 +20,7 @@ spring on (``hertz``, ``damping_ratio``, ``max_force``); ``motor`` is a motor jo
 A is (linear_offset, angular_offset) in b's frame, driven by linear and angular springs of
 ``box2d.hertz`` (default 60 Hz, critically damped) capped at max_force / max_torque.
 Springs (version 1) become soft distance joints with the spring's natural frequency for the
-mass of a (or the pair's reduced mass), as bench/refs.py does for pybox2d.
+mass of a (or the pair's reduced mass), as bench/engines/pybox2d_sim.py does for pybox2d.
 """
 from __future__ import annotations
 

@@ -82,7 +82,7 @@ def body_records(body, slot, path):
 
 def bodies_records(bodies, first_slot, names, path="bodies"):
     """Records for a list of bodies created from slot ``first_slot``; fills ``names`` with
-    name -> (slot, pose) (an unnamed body is reachable by its slot number, as bench/refs.py does)."""
+    name -> (slot, pose) (an unnamed body is reachable by its slot number, as bench/desc.py does)."""
     if not isinstance(bodies, list):
         raise ValueError(f"{path}: a list of bodies expected")
     out = []

@@ -19,7 +19,7 @@ Materials: Box2D has one friction coefficient per shape and mixes sqrt(mu_a mu_b
 ``b2DefaultFrictionCallback``); restitution mixes by max (``b2DefaultRestitutionCallback``).
 Stelkropp mixes each of its static and dynamic coefficients by the same geometric mean and
 restitution by the same max, so the mixing matches; a ``{"static": s, "dynamic": d}`` pair
-gives Box2D the dynamic coefficient (as bench/refs.py does for pybox2d and pymunk).
+gives Box2D the dynamic coefficient (as bench/engines/ does for pybox2d and pymunk).
 """
 from __future__ import annotations
 
