@@ -10,6 +10,8 @@ import physics
 import pyglet
 from OpenGL import GL
 
+from .scenes import scene_files, user_scenes_dir
+
 STATUS_EVERY = 2        # frames between status writes
 
 
@@ -50,7 +52,12 @@ def status(app) -> dict:
         "springs": [{"id": s.id, "a": s.body_a.id, "b": None if s.body_b is None else s.body_b.id}
                     for s in w.springs if s.id not in ed.tool_springs] if small else [],
         "overlays": dict(vars(app.overlays)), "quadtree_cells": len(app.sim.quadtree),
-        "free_area": list(app.free_area()), "edit_error": ed.edit_error, "status_every": STATUS_EVERY,
+        "free_rect": list(app.free_rect()), "edit_error": ed.edit_error, "status_every": STATUS_EVERY,
+        "save_as": app.files.save_as_path, "dialog": app.panels.dialogs.open_title,
+        "user_scenes": [str(p) for p in scene_files(user_scenes_dir())],
+        "bound": {"lo": app.bound.lo.tolist(), "hi": app.bound.hi.tolist(), "enabled": app.bound.enabled,
+                  "shown": app.bound.shown},
+        "plots": [p.last for p in app.panels.stats.plots] if app.panels.show_stats else [],
     }
 
 

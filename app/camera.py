@@ -36,31 +36,34 @@ class Camera:
         after = self.to_world(sx, sy)
         self.center += before - after
 
-    def fit(self, lo, hi, margin: float = 0.06, avoid_left: float = 0.0, avoid_right: float = 0.0) -> None:
-        """Show the world box [lo, hi] with a margin; ``avoid_left``/``avoid_right`` pixels are covered
-        by panels."""
+    def _place(self, point, rect) -> None:
+        """Put world ``point`` at the middle of ``rect`` (x0, y0, x1, y1 window pixels, y down)."""
+        if rect is None:
+            rect = (0.0, 0.0, self.width, self.height)
+        x0, y0, x1, y1 = rect
+        offset = np.array([0.5 * (x0 + x1) - 0.5 * self.width, 0.5 * self.height - 0.5 * (y0 + y1)])
+        self.center = np.asarray(point, dtype=np.float64).reshape(2) - offset / self.scale
+
+    def fit(self, lo, hi, margin: float = 0.06, rect=None) -> None:
+        """Show the world box [lo, hi] with a margin inside ``rect`` (window pixels, y down;
+        default: the whole window)."""
         lo = np.asarray(lo, dtype=np.float64)
         hi = np.asarray(hi, dtype=np.float64)
         if not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi))):
             return
+        if rect is None:
+            rect = (0.0, 0.0, self.width, self.height)
         size = np.maximum(hi - lo, 1.0)
-        if self.width - avoid_left - avoid_right < 300:
-            avoid_left = avoid_right = 0.0
-        usable_w = max(100.0, self.width - avoid_left - avoid_right)
-        s = min(usable_w / size[0], self.height / size[1]) * (1.0 - 2 * margin)
+        w, h = max(100.0, rect[2] - rect[0]), max(100.0, rect[3] - rect[1])
+        s = min(w / size[0], h / size[1]) * (1.0 - 2 * margin)
         self.scale = float(np.clip(s, self.MIN_SCALE, self.MAX_SCALE))
-        mid = 0.5 * (lo + hi)
-        # shift so the box is centred in the area right of the panels
-        self.center = mid - np.array([0.5 * (avoid_left - avoid_right) / self.scale, 0.0])
+        self._place(0.5 * (lo + hi), rect)
 
-    def look_at(self, center, scale: float, avoid_left: float = 0.0, avoid_right: float = 0.0) -> None:
-        """Put world point ``center`` at the middle of the area between ``avoid_left`` and
-        ``avoid_right`` pixels (panels), at ``scale`` pixels per metre."""
-        if self.width - avoid_left - avoid_right < 300:
-            avoid_left = avoid_right = 0.0
+    def look_at(self, center, scale: float, rect=None) -> None:
+        """Put world point ``center`` at the middle of ``rect`` (window pixels, y down; default:
+        the whole window), at ``scale`` pixels per metre."""
         self.scale = float(np.clip(scale, self.MIN_SCALE, self.MAX_SCALE))
-        self.center = np.asarray(center, dtype=np.float64).reshape(2) - \
-            np.array([0.5 * (avoid_left - avoid_right) / self.scale, 0.0])
+        self._place(center, rect)
 
     def matrix(self) -> np.ndarray:
         """World -> clip space as a column-major 3x3 (for a mat3 uniform)."""

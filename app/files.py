@@ -1,31 +1,47 @@
 """Opening, saving, resetting and restoring scenes: the file side of the editor.
 
 ``errors`` holds the problems of the last scene that failed to load (shown until dismissed; the
-current scene stays).  ``confirm(message, on_discard, on_save)`` asks before unsaved edits are lost.
+current scene stays).  ``ask(title, lines, buttons)`` puts a question to the user (see
+``panels.dialogs.Dialogs.ask``): before unsaved edits are lost, and before a file is overwritten.
+Shipped scenes are read-only: saving one writes it to the user's scene folder (``scenes.save_target``).
 """
 from __future__ import annotations
 
 from pathlib import Path
 
 from .document import restore
-from .scenes import format_scene_error, load_world
+from .scenes import format_scene_error, load_world, save_target, user_scenes_dir
 
 
 class SceneFiles:
-    def __init__(self, editor, autosaver, confirm):
+    def __init__(self, editor, autosaver, ask):
         self.editor = editor
         self.autosaver = autosaver
-        self.confirm = confirm
+        self.ask = ask
         self.errors: list[str] = []
-        self.save_as_path = ""      # the Save-as field of the scene panel
+        self.save_as_path = self.default_save_as(editor.doc.path)   # the Save-as field of the scene panel
+        editor.on_document.append(lambda world, path, keep: self.follow(path))
+
+    @staticmethod
+    def default_save_as(path) -> str:
+        """What the Save-as field shows for a document from ``path`` (None: a new scene)."""
+        return str(save_target(path) if path else user_scenes_dir() / "untitled.json")
+
+    def follow(self, path):
+        """The Save-as field follows the current scene."""
+        self.save_as_path = self.default_save_as(path)
+
+    def confirm_unsaved(self, message, then):
+        """Run ``then`` now if nothing is unsaved; otherwise ask: save first, discard, or cancel."""
+        if not self.editor.doc.dirty:
+            then()
+            return
+        self.ask("Unsaved edits", [message, "The scene has unsaved edits."],
+                 [("Save, then continue", lambda: self.save(then=then)), ("Discard edits", then), ("Cancel", None)])
 
     def request_open(self, path):
         path = Path(path)
-        if self.editor.doc.dirty:
-            self.confirm(f"Open {path.name}?", lambda: self.open_scene(path),
-                         lambda: self.save() and self.open_scene(path))
-        else:
-            self.open_scene(path)
+        self.confirm_unsaved(f"Open {path.name}?", lambda: self.open_scene(path))
 
     def open_scene(self, path) -> bool:
         path = Path(path)
@@ -40,28 +56,43 @@ class SceneFiles:
         self.editor.notify(f"opened {path.name}")
         return True
 
-    def save(self, path=None) -> bool:
+    def save(self, path=None, then=None) -> bool:
+        """Save to ``path`` (default: the document's own file, else the Save-as field).  A shipped
+        scene is written to the user's scene folder instead; a file other than the document's own
+        is overwritten only after asking.  ``then`` runs after a successful save.  Returns True if
+        the scene was written now."""
+        doc = self.editor.doc
+        wanted = Path(path) if path else (doc.path or Path(self.save_as_path))
+        target = save_target(wanted)
+        own = doc.path is not None and target.resolve() == Path(doc.path).resolve()
+        if target.exists() and not own:
+            self.ask("Overwrite?", [f"{target} exists.", "Replace it with this scene?"],
+                     [("Overwrite", lambda: self.write(target, wanted, then)), ("Cancel", None)])
+            return False
+        return self.write(target, wanted, then)
+
+    def write(self, target: Path, wanted: Path, then=None) -> bool:
         ed = self.editor
-        path = Path(path) if path else ed.doc.path
-        if path is None:
-            path = Path(self.save_as_path or "scenes/untitled.json")
         ed.tools["select"].end_joint()
         try:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            ed.world.save_scene(str(path))
+            target.parent.mkdir(parents=True, exist_ok=True)
+            ed.world.save_scene(str(target))
         except Exception as exc:  # noqa: BLE001
             ed.notify(f"save failed: {exc}", error=True)
             return False
-        ed.doc.mark_saved(path)
-        self.autosaver.set_origin(path)
-        ed.notify(f"saved {path}")
+        ed.doc.mark_saved(target)
+        self.autosaver.set_origin(target)
+        self.save_as_path = str(target)
+        if target != wanted:
+            ed.notify(f"{wanted.name} ships with Stelkropp (read-only): saved as {target}")
+        else:
+            ed.notify(f"saved {target}")
+        if then is not None:
+            then()
         return True
 
     def request_reset(self):
-        if self.editor.doc.dirty:
-            self.confirm("Reset to the loaded state?", self.reset, lambda: self.save() and self.reset())
-        else:
-            self.reset()
+        self.confirm_unsaved("Reset to the loaded state?", self.reset)
 
     def reset(self):
         ed = self.editor

@@ -1,44 +1,66 @@
-"""Where the scene is shown: the free area between the panels, fitting the bodies into it, and the
-scene file's own camera block."""
+"""Where the scene is shown: the free area beside the panels, fitting the scene into it, and the
+scene file's own camera block.  Rectangles are window pixels (x0, y0, x1, y1) with y down, as
+imgui reports them."""
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
 
+GAP = 8.0         # pixels kept clear around a panel
+MIN_SIDE = 200.0  # a free area narrower or lower than this is not worth framing into
 
-def free_area(ui_rects: dict, width: float, show_ui: bool, default: tuple[float, float]) -> tuple[float, float]:
-    """Pixels covered by panels at the left and right edges of the window: the scene is framed
-    in the area between them.  Uses the panels' rectangles from the last frame (they can be
-    moved), or ``default`` (their places before the first frame with panels)."""
-    if not show_ui:
-        return 0.0, 0.0
-    rects = [ui_rects.get(k) for k in ("main_window", "stats_window")]
-    if rects[0] is None:      # not drawn yet: the default layout
-        return default
-    W = float(width)
-    left = right = 0.0
-    for r in rects:
-        if r is None or r[3] - r[1] < 60:      # absent, or collapsed to its title bar
+
+def free_regions(panels, width, height):
+    """Axis-aligned rectangles of the window that no panel covers, bounded by panel edges
+    (a few candidates: there are at most a handful of panels)."""
+    xs0 = {0.0} | {r[2] + GAP for r in panels}
+    xs1 = {float(width)} | {r[0] - GAP for r in panels}
+    ys0 = {0.0} | {r[3] + GAP for r in panels}
+    ys1 = {float(height)} | {r[1] - GAP for r in panels}
+    out = []
+    for x0, x1, y0, y1 in itertools.product(xs0, xs1, ys0, ys1):
+        if x1 - x0 < MIN_SIDE or y1 - y0 < MIN_SIDE or x0 < 0 or y0 < 0 or x1 > width or y1 > height:
             continue
-        x0, _, x1, _ = r
-        if 0.5 * (x0 + x1) < 0.5 * W:
-            left = max(left, x1 + 8.0)
-        else:
-            right = max(right, W - x0 + 8.0)
-    return left, right
+        if any(x0 < r[2] + GAP and r[0] - GAP < x1 and y0 < r[3] + GAP and r[1] - GAP < y1 for r in panels):
+            continue
+        out.append((x0, y0, x1, y1))
+    return out or [(0.0, 0.0, float(width), float(height))]
 
 
-def fit(camera, world, free) -> None:
-    """Frame every body in the free area ``free`` = (left, right) pixels (F)."""
+def best_region(regions, size=None):
+    """The region showing a box of ``size`` (w, h metres) largest, or the largest region."""
+    def score(r):
+        w, h = r[2] - r[0], r[3] - r[1]
+        return min(w / size[0], h / size[1]) if size is not None else w * h
+    return max(regions, key=score)
+
+
+def panel_rects(ui_rects: dict, keys=("main_window", "stats_window")):
+    """The rectangles of the panels that take room from the scene (collapsed ones do not)."""
+    rects = [ui_rects.get(k) for k in keys]
+    return [r for r in rects if r is not None and r[3] - r[1] >= 60]
+
+
+def content_box(world):
+    """(lo, hi) corners of every body's bounding box (m), or None for an empty world."""
     rd = world.render_data()
     if not len(rd.aabb):
-        return
+        return None
     box = rd.aabb[np.all(np.isfinite(rd.aabb), axis=1)]
     if not len(box):
+        return None
+    return box[:, :2].min(0), box[:, 2:].max(0)
+
+
+def fit(camera, box, regions) -> None:
+    """Frame ``box`` = (lo, hi) in the region of ``regions`` where it shows largest."""
+    if box is None:
         return
-    left, right = free
-    camera.fit(box[:, :2].min(0), box[:, 2:].max(0), avoid_left=left, avoid_right=right)
+    lo, hi = box
+    size = np.maximum(np.asarray(hi) - np.asarray(lo), 1.0)
+    camera.fit(lo, hi, rect=best_region(regions, size))
 
 
 def scene_camera(world):
@@ -55,12 +77,11 @@ def scene_camera(world):
     return center, zoom
 
 
-def frame_scene(camera, world, free) -> None:
-    """On opening a scene: its own camera if the file has one (centred in the free area),
-    otherwise fit the scene into the free area."""
+def frame_scene(camera, world, regions, box=None) -> None:
+    """On opening a scene: its own camera if the file has one (its centre in the middle of the
+    largest free region), otherwise fit ``box`` (default: every body) into the free area."""
     cam = scene_camera(world)
     if cam is None:
-        fit(camera, world, free)
+        fit(camera, box if box is not None else content_box(world), regions)
     else:
-        left, right = free
-        camera.look_at(cam[0], cam[1], avoid_left=left, avoid_right=right)
+        camera.look_at(cam[0], cam[1], rect=best_region(regions))

@@ -31,15 +31,20 @@ class SceneInput:
         except ValueError as exc:
             self.editor.notify(f"refused: {exc}", error=True)
 
-    def scene_mouse(self) -> bool:
-        """May a pointer event go to the scene (no panel under it, kernels ready)?"""
-        io = imgui.get_io()
-        return not (io.want_capture_mouse or self.app.panels.over_ui) and self.app.warmup.ready
+    def on_panel(self, x, y) -> bool:
+        """Does a pointer event at window pixel (x, y) (pyglet's, y up) land on a panel?  Judged
+        by where the panels are drawn, not by where imgui saw the pointer in the last frame, so
+        an event in the frame the pointer reaches (or leaves) a panel goes where it lands."""
+        return self.app.panels.hits.covers(x, self.app.height - y)
+
+    def scene_mouse(self, x, y) -> bool:
+        """May a pointer event at (x, y) go to the scene (no panel there, kernels ready)?"""
+        return self.app.warmup.ready and not self.on_panel(x, y)
 
     def update_hover(self):
         """The body under the pointer (drawn highlighted), none over a panel or while panning."""
         ed = self.editor
-        if self.app.panels.over_ui or self.panning:
+        if self.on_panel(*self.cursor_px) or self.panning:
             ed.hovered = None
             return
         try:
@@ -54,7 +59,7 @@ class SceneInput:
 
     def on_mouse_press(self, x, y, button, modifiers):
         self.on_mouse_motion(x, y, 0, 0)
-        if not self.scene_mouse():
+        if not self.scene_mouse(x, y):
             return
         if button in (mouse.RIGHT, mouse.MIDDLE):
             self.panning = (x, y)
@@ -82,7 +87,7 @@ class SceneInput:
             self._call_tool(self.editor.tool.release, tuple(self.editor.cursor))
 
     def on_mouse_scroll(self, x, y, scroll_x, scroll_y):
-        if not self.scene_mouse():
+        if not self.scene_mouse(x, y):
             return
         self.app.camera.zoom_at(x, y, 1.15 ** scroll_y)
         self.editor.cursor = self.app.camera.to_world(x, y)

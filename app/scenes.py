@@ -9,8 +9,31 @@ from pathlib import Path
 import physics
 
 ROOT = Path(__file__).resolve().parent.parent
-SCENES_DIR = ROOT / "scenes"
+SCENES_DIR = ROOT / "scenes"          # the shipped scenes: read-only to the sandbox
 DEFAULT_SCENE = SCENES_DIR / "default.json"
+
+
+def user_scenes_dir() -> Path:
+    """The user's scene folder: ``scenes`` in platformdirs' user data dir (on Linux
+    ``$XDG_DATA_HOME/stelkropp/scenes``, by default ``~/.local/share/stelkropp/scenes``)."""
+    import platformdirs
+    return Path(platformdirs.user_data_dir("stelkropp", appauthor=False)) / "scenes"
+
+
+def is_shipped(path) -> bool:
+    """Is ``path`` one of the scenes that ship with Stelkropp (under ``scenes/``)?"""
+    try:
+        p = Path(path).resolve()
+        return SCENES_DIR.resolve() in p.parents
+    except OSError:
+        return False
+
+
+def save_target(path) -> Path:
+    """Where saving to ``path`` writes: a shipped scene goes to the user's scene folder under the
+    same name (shipped scenes are never overwritten); any other path is itself."""
+    path = Path(path)
+    return user_scenes_dir() / path.name if is_shipped(path) else path
 
 
 def demo_world():
@@ -49,10 +72,12 @@ def bench_world(n: int):
     return w
 
 
-def scene_files() -> list[Path]:
-    if not SCENES_DIR.is_dir():
+def scene_files(folder: Path | None = None) -> list[Path]:
+    """The scene files in ``folder`` (default: the shipped scenes), sorted by name."""
+    folder = SCENES_DIR if folder is None else Path(folder)
+    if not folder.is_dir():
         return []
-    return sorted(p for p in SCENES_DIR.glob("*.json") if not p.name.endswith(".schema.json"))
+    return sorted(p for p in folder.glob("*.json") if not p.name.endswith(".schema.json"))
 
 
 def format_scene_error(exc) -> list[str]:

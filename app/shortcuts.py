@@ -26,7 +26,7 @@ def _toggle_ui(app, shift):
 SHORTCUTS = (
     (K.Z, True, lambda app, shift: app.editor.redo() if shift else app.editor.undo()),
     (K.Y, True, lambda app, shift: app.editor.redo()),
-    (K.S, True, lambda app, shift: app.files.save()),
+    (K.S, True, lambda app, shift: app.panels.focus_save_as() if shift else app.files.save()),
     (K.D, True, lambda app, shift: app.editor.duplicate_selection()),
     (K.SPACE, False, lambda app, shift: app.sim.toggle_run()),
     (K.S, False, lambda app, shift: app.sim.step_once()),

@@ -14,12 +14,14 @@ from OpenGL import GL
 
 from . import framing
 from .autosave import Autosaver
+from .bound import WorldBound
 from .camera import Camera
+from .commands import RemoveBodies
 from .editor import Editor
 from .files import SceneFiles
 from .input import SceneInput
 from .notices import Notices
-from .panels import PANEL_W, STATS_W, Panels, apply_style
+from .panels import Panels, apply_style
 from .panels.notes import overlay_note
 from .render import Overlays, Renderer
 from .scenes import initial_world
@@ -27,7 +29,8 @@ from .simulation import Simulation
 from .stats import FrameTimes, StatsSampler
 from .warmup import Warmup
 
-PROFILE = bool(os.environ.get("STELKROPP_PROFILE"))   # glFinish after each part: honest frame split
+PROFILE = bool(os.environ.get("STELKROPP_PROFILE"))
+BOUND_COLOR = (1.0, 0.62, 0.25, 0.55)     # the world bound's outline   # glFinish after each part: honest frame split
 
 
 class Sandbox(pyglet.window.Window):
@@ -41,7 +44,7 @@ class Sandbox(pyglet.window.Window):
         super().__init__(size[0], size[1], "Stelkropp", resizable=True, config=config, vsync=vsync)
         if position is not None:
             self.set_location(*position)
-        imgui.create_context()
+        imgui_ctx = imgui.create_context()
         implot.create_context()
         io = imgui.get_io()
         io.set_ini_filename(None)
@@ -64,15 +67,17 @@ class Sandbox(pyglet.window.Window):
         else:
             path = None
         self.editor = Editor(world, path, self.notices, self.camera)
+        self.bound = WorldBound()
+        self._scene_pending = "new"     # the next ready frame sets the bound and frames the scene
         lock = threading.Lock()
         self.warmup = Warmup(world, lock)
         self.sim = Simulation(self.editor, self.warmup, self.notices, paused=paused, lock=lock)
         self.autosaver = Autosaver(interval=autosave_interval)
-        self.files = SceneFiles(self.editor, self.autosaver, lambda *a: self.panels.confirm(*a))
+        self.files = SceneFiles(self.editor, self.autosaver, lambda *a: self.panels.ask(*a))
         self.files.errors = errors
         crash = self.autosaver.previous_crash() if offer_autosave else None
         self.autosaver.begin_session(path)
-        self.panels = Panels(self)
+        self.panels = Panels(self, imgui_ctx)
         if crash:
             self.panels.dialogs.autosave_offer = crash
         self.input = SceneInput(self)
@@ -81,7 +86,6 @@ class Sandbox(pyglet.window.Window):
         self.editor.on_document.append(self._document_changed)
         self.editor.on_mode.append(self._mode_changed)
         self.warmup.start()
-        self._fitted = False
         self._caption = None
         self._update_caption()
 
@@ -98,8 +102,7 @@ class Sandbox(pyglet.window.Window):
     def _document_changed(self, world, path, keep_camera):
         self.sim.reset()
         self.sampler.clear()
-        if not keep_camera:
-            self.frame_scene()
+        self._scene_pending = "reset" if keep_camera else "new"
         self.autosaver.set_origin(path)
         self._mode_changed(world.solver, world.integrator)
 
@@ -108,17 +111,28 @@ class Sandbox(pyglet.window.Window):
             self.warmup.prioritize(solver, integrator)
 
     # -- where the scene is shown ------------------------------------------------------
-    def free_area(self) -> tuple[float, float]:
-        """Pixels covered by panels at the left and right edges (see ``framing.free_area``)."""
-        default = (float(PANEL_W + 16), float(STATS_W + 16) if self.panels.show_stats else 0.0)
-        return framing.free_area(self.ui_rects, self.width, self.show_ui, default)
+    def panel_rects(self):
+        """The panels' rectangles from the last frame (they can be moved), or their default places
+        before the first frame with panels; none while the panels are hidden (H)."""
+        if not self.show_ui:
+            return []
+        if "main_window" not in self.ui_rects:
+            return self.panels.default_rects(self.width, self.height)
+        return framing.panel_rects(self.ui_rects)
+
+    def free_regions(self):
+        return framing.free_regions(self.panel_rects(), self.width, self.height)
+
+    def free_rect(self):
+        """The largest free area beside the panels (window pixels, y down): scenes open framed in it."""
+        return framing.best_region(self.free_regions())
 
     def fit(self):
-        """Frame every body in the free area between the panels (F)."""
-        framing.fit(self.camera, self.world, self.free_area())
+        """Frame the scene's content in the free area (F): the bodies inside the world bound."""
+        framing.fit(self.camera, self.bound.content(self.world.render_data()), self.free_regions())
 
     def frame_scene(self):
-        framing.frame_scene(self.camera, self.world, self.free_area())
+        framing.frame_scene(self.camera, self.world, self.free_regions())
 
     # -- one frame -------------------------------------------------------------------
     def frame(self, real_dt):
@@ -130,13 +144,12 @@ class Sandbox(pyglet.window.Window):
         ready = self.warmup.ready
         phys_ms = upload_ms = 0.0
         if ready:
-            if not self._fitted:
-                self._fitted = True
-                self.frame_scene()
+            self.prepare_scene()
             phys_ms, steps = self.sim.advance(real_dt, velocities=self.overlays.velocities)
+            rd = self.check_bound() if steps else None
             self.sampler.sample(self.world, phys_ms, steps, self.frame_no, len(self.rd_ids))
             self.input.update_hover()
-            upload_ms = self.build_scene()
+            upload_ms = self.build_scene(rd)
         t_draw = time.perf_counter()
         fw, fh = self.get_framebuffer_size()
         if ready:
@@ -163,11 +176,43 @@ class Sandbox(pyglet.window.Window):
         self._update_caption()
         self.frame_no += 1
 
-    def build_scene(self) -> float:
-        """The world's render data -> the renderer's vertex buffers; returns the upload ms."""
+    def prepare_scene(self):
+        """The first ready frame of a new document: the world bound from the scene's extent and
+        the camera; after a reset only who is inside the bound (the view and the bound stay)."""
+        if self._scene_pending is None:
+            return
         rd = self.world.render_data()
+        if self._scene_pending == "new":
+            self.bound.fit_scene(rd)
+            self.frame_scene()
+        else:
+            self.bound.rebase(rd)
+        self._scene_pending = None
+
+    def check_bound(self):
+        """Remove the moving bodies that crossed the world bound this frame (one undoable edit);
+        returns the render data to draw."""
+        rd = self.world.render_data()
+        gone = set(self.bound.crossed(rd).tolist())
+        if not gone:
+            return rd
+        bodies = [b for b in self.world.bodies if b.id in gone]
+        cmd = RemoveBodies(self.editor, bodies)
+        cmd.label = f"remove {len(bodies)} bodies that left the world bound"
+        self.editor.execute(cmd)
+        n = len(bodies)
+        self.notices.notify(f"{n} bod{'y' if n == 1 else 'ies'} left the world bound and "
+                            f"{'was' if n == 1 else 'were'} removed (Ctrl+Z brings {'it' if n == 1 else 'them'} back)")
+        return self.world.render_data()
+
+    def build_scene(self, rd=None) -> float:
+        """The world's render data -> the renderer's vertex buffers; returns the upload ms."""
+        rd = self.world.render_data() if rd is None else rd
         self.rd_ids = rd.ids
         decor = self.editor.decor()
+        if self.bound.shown:
+            for a, b in self.bound.outline():
+                decor.segments.append((a, b, 1.5, BOUND_COLOR))
         velocities = self.sim.body_velocities(rd) if self.overlays.velocities else None
         quadtree = self.sim.quadtree_cells(self._quadtree_failed) if self.overlays.quadtree else None
         spring_ids = np.array([s.id for s in self.world.springs], dtype=np.int64) \
@@ -185,8 +230,9 @@ class Sandbox(pyglet.window.Window):
         if self.show_ui or not ready:
             self.panels.draw()
         if self.sim.compiling_note and ready:
-            overlay_note(self.sim.compiling_note)
+            overlay_note(self, self.sim.compiling_note)
         imgui.render()
+        self.panels.hits.refresh()       # where the panels are now: the next events are routed by it
         self.gui.render(imgui.get_draw_data())
 
     # -- window events ---------------------------------------------------------------
@@ -198,11 +244,10 @@ class Sandbox(pyglet.window.Window):
         pass
 
     def on_close(self):
-        if self.editor.doc.dirty and not getattr(self, "force_close", False):
-            self.panels.confirm("Quit Stelkropp?", self._really_close,
-                                lambda: self.files.save() and self._really_close())
-            return pyglet.event.EVENT_HANDLED
-        self._really_close()
+        if getattr(self, "force_close", False):
+            self._really_close()
+        else:
+            self.files.confirm_unsaved("Quit Stelkropp?", self._really_close)
         return pyglet.event.EVENT_HANDLED
 
     def _really_close(self):

@@ -44,7 +44,9 @@ class Section:
         if self.force_open():
             imgui.set_next_item_open(True)
         flags = imgui.TreeNodeFlags_.default_open.value if self.default_open else 0
-        return imgui.collapsing_header(self.title, flags)
+        opened = imgui.collapsing_header(self.title, flags)
+        record(self.app, f"section:{self.title}")
+        return opened
 
     def draw(self):
         raise NotImplementedError

@@ -1,4 +1,4 @@
-"""Dialogs: "unsaved edits" before they would be lost, the crash-recovery offer, and the window
+"""Dialogs: questions (unsaved edits, overwrite a file), the crash-recovery offer, and the window
 listing a failed load's problems."""
 from __future__ import annotations
 
@@ -6,22 +6,29 @@ import time
 
 from imgui_bundle import imgui
 
-from .style import AMBER, DIM, PANEL_W, RED, STATS_W
+from .base import record
+from .style import AMBER, DIM, RED
 
 
 class Dialogs:
     def __init__(self, app):
         self.app = app
-        self.pending_confirm = None   # (message, on_discard, on_save)
+        self.question = None          # (title, lines, [(button label, callback or None)])
         self.autosave_offer = None    # (path, mtime, origin)
 
-    def confirm(self, message, on_discard, on_save=None):
-        """Ask before unsaved edits are lost: discard (``on_discard``), save first (``on_save``), cancel."""
-        self.pending_confirm = (message, on_discard, on_save)
+    def ask(self, title, lines, buttons):
+        """Put a question in a modal dialog: ``lines`` of text, one button per (label, callback);
+        a callback of None (and Esc) only closes the dialog.  A callback may ask again."""
+        self.question = (title, list(lines), list(buttons))
+
+    @property
+    def open_title(self):
+        """The title of the question being asked, or None."""
+        return self.question[0] if self.question else None
 
     def draw(self):
         self.scene_errors()
-        self.unsaved()
+        self.ask_window()
         self.restore_offer()
 
     @staticmethod
@@ -30,31 +37,36 @@ class Dialogs:
         imgui.set_next_window_pos(imgui.ImVec2(io.display_size.x * 0.5, io.display_size.y * 0.4),
                                   imgui.Cond_.appearing.value, imgui.ImVec2(0.5, 0.5))
 
-    def unsaved(self):
-        if self.pending_confirm is not None and not imgui.is_popup_open("Unsaved edits"):
-            imgui.open_popup("Unsaved edits")
+    def ask_window(self):
+        if self.question is None:
+            return
+        title = self.question[0]
+        if not imgui.is_popup_open(title):
+            imgui.open_popup(title)
         self._centre_next()
-        opened, _ = imgui.begin_popup_modal("Unsaved edits", None, imgui.WindowFlags_.always_auto_resize.value)
+        opened, _ = imgui.begin_popup_modal(title, None, imgui.WindowFlags_.always_auto_resize.value)
         if not opened:
             return
-        msg, on_discard, on_save = self.pending_confirm or ("", None, None)
-        imgui.text(msg)
-        imgui.text_colored(AMBER, "The scene has unsaved edits.")
-        if on_save is not None and imgui.button("Save, then continue"):
-            self.pending_confirm = None
+        _, lines, buttons = self.question
+        for i, line in enumerate(lines):
+            if i:
+                imgui.text_colored(AMBER, line)
+            else:
+                imgui.text(line)
+        chosen = None
+        for i, (label, fn) in enumerate(buttons):
+            if i:
+                imgui.same_line()
+            if imgui.button(label):
+                chosen = (fn,)
+            record(self.app, f"dialog:{label}")
+        if chosen is None and imgui.is_key_pressed(imgui.Key.escape):
+            chosen = (None,)
+        if chosen is not None:
+            self.question = None
             imgui.close_current_popup()
-            on_save()
-            imgui.same_line()
-        elif on_save is not None:
-            imgui.same_line()
-        if imgui.button("Discard edits"):
-            self.pending_confirm = None
-            imgui.close_current_popup()
-            on_discard()
-        imgui.same_line()
-        if imgui.button("Cancel") or imgui.is_key_pressed(imgui.Key.escape):
-            self.pending_confirm = None
-            imgui.close_current_popup()
+            if chosen[0] is not None:
+                chosen[0]()
         imgui.end_popup()
 
     def restore_offer(self):
@@ -85,9 +97,8 @@ class Dialogs:
         errors = app.files.errors
         if not errors:
             return
-        io = imgui.get_io()
-        imgui.set_next_window_pos(imgui.ImVec2(io.display_size.x * 0.5 + 0.5 * (PANEL_W - STATS_W),
-                                               io.display_size.y - 48),
+        x0, _, x1, y1 = app.free_rect()
+        imgui.set_next_window_pos(imgui.ImVec2(0.5 * (x0 + x1), y1 - 40),
                                   imgui.Cond_.appearing.value, imgui.ImVec2(0.5, 1.0))
         imgui.set_next_window_size_constraints(imgui.ImVec2(300, 0), imgui.ImVec2(560, 400))
         flags = (imgui.WindowFlags_.always_auto_resize | imgui.WindowFlags_.no_saved_settings |

@@ -6,13 +6,14 @@ from imgui_bundle import imgui
 
 from .base import record_window
 from .dialogs import Dialogs
+from .hits import PanelHits
 from .inspector import InspectorSection
 from .notes import messages, progress_window
 from .scene import SceneSection
 from .simulation import SimulationSection
 from .solver import SolverSection
-from .stats import StatsWindow
-from .style import PANEL_W
+from .stats import StatsWindow, stats_default_rect
+from .style import PANEL_W, label_room
 from .tools import ToolsSection
 from .view import ViewSection
 
@@ -21,24 +22,36 @@ SECTIONS = (SimulationSection, ToolsSection, InspectorSection, SolverSection, Sc
 
 
 class Panels:
-    """``over_ui``: the pointer was over a panel in the last frame; ``show_stats``: the stats
-    window is open."""
+    """The imgui UI of ``app``; ``hits`` says where its windows are (event routing);
+    ``show_stats``: the stats window is open."""
 
-    def __init__(self, app):
+    def __init__(self, app, imgui_ctx):
         self.app = app
+        self.hits = PanelHits(imgui_ctx)
         self.sections = [cls(app) for cls in SECTIONS]
         self.tools = next(s for s in self.sections if isinstance(s, ToolsSection))
+        self.scene = next(s for s in self.sections if isinstance(s, SceneSection))
         self.stats = StatsWindow(app)
         self.dialogs = Dialogs(app)
-        self.over_ui = False
         self.show_stats = True
 
-    def confirm(self, message, on_discard, on_save=None):
-        self.dialogs.confirm(message, on_discard, on_save)
+    def ask(self, title, lines, buttons):
+        self.dialogs.ask(title, lines, buttons)
+
+    def default_rects(self, width, height):
+        """Where the side panel and the stats window open (window pixels, y down)."""
+        rects = [(8.0, 8.0, 8.0 + PANEL_W, height - 8.0)]
+        if self.show_stats:
+            rects.append(stats_default_rect(width, height))
+        return rects
+
+    def focus_save_as(self):
+        """Open the Scene section with the keyboard in its Save-as field (Ctrl+Shift+S)."""
+        self.app.show_ui = True
+        self.scene.focus_save_as = True
 
     def draw(self):
         app = self.app
-        io = imgui.get_io()
         app.ui_rects.pop("main_window", None)
         app.ui_rects.pop("stats_window", None)
         if not app.warmup.ready:
@@ -50,7 +63,6 @@ class Panels:
         messages(app)
         self.dialogs.draw()
         self.tools.drop()
-        self.over_ui = imgui.is_window_hovered(imgui.HoveredFlags_.any_window.value) or io.want_capture_mouse
 
     def main_window(self):
         app = self.app
@@ -58,8 +70,13 @@ class Panels:
         imgui.set_next_window_pos(imgui.ImVec2(8, 8), imgui.Cond_.first_use_ever.value)
         imgui.set_next_window_size(imgui.ImVec2(PANEL_W, io.display_size.y - 16), imgui.Cond_.first_use_ever.value)
         imgui.begin(f"Stelkropp - {app.editor.doc.title}###main", None, imgui.WindowFlags_.no_collapse.value)
+        imgui.push_item_width(-label_room(app.world.settings.declared().keys()))
+        # the right edge of the content (labels are clipped beyond it)
+        app.ui_rects["main_content"] = (imgui.get_cursor_screen_pos().x, 0.0,
+                                        imgui.get_cursor_screen_pos().x + imgui.get_content_region_avail().x, 0.0)
         for section in self.sections:
             if section.header():
                 section.draw()
+        imgui.pop_item_width()
         record_window(app, "main_window")
         imgui.end()

@@ -6,7 +6,7 @@ import time
 
 from imgui_bundle import imgui
 
-from .style import AMBER, DIM, GREEN, PANEL_W, RED
+from .style import AMBER, DIM, GREEN, RED
 
 NOTE_FLAGS = (imgui.WindowFlags_.no_decoration | imgui.WindowFlags_.always_auto_resize |
               imgui.WindowFlags_.no_inputs | imgui.WindowFlags_.no_saved_settings).value
@@ -17,9 +17,8 @@ def messages(app):
     msgs = app.notices.recent(6.0)
     if not msgs:
         return
-    io = imgui.get_io()
-    imgui.set_next_window_pos(imgui.ImVec2(io.display_size.x * 0.5 + PANEL_W * 0.5, io.display_size.y - 12),
-                              imgui.Cond_.always.value, imgui.ImVec2(0.5, 1.0))
+    x0, _, x1, y1 = app.free_rect()
+    imgui.set_next_window_pos(imgui.ImVec2(0.5 * (x0 + x1), y1 - 4), imgui.Cond_.always.value, imgui.ImVec2(0.5, 1.0))
     imgui.set_next_window_bg_alpha(0.85)
     flags = (imgui.WindowFlags_.no_decoration | imgui.WindowFlags_.always_auto_resize |
              imgui.WindowFlags_.no_saved_settings | imgui.WindowFlags_.no_focus_on_appearing |
@@ -30,11 +29,10 @@ def messages(app):
     imgui.end()
 
 
-def overlay_note(text):
+def overlay_note(app, text):
     """One amber line at the top of the scene (e.g. a mode still compiling)."""
-    io = imgui.get_io()
-    imgui.set_next_window_pos(imgui.ImVec2(io.display_size.x * 0.5 + PANEL_W * 0.5, 14),
-                              imgui.Cond_.always.value, imgui.ImVec2(0.5, 0.0))
+    x0, y0, x1, _ = app.free_rect()
+    imgui.set_next_window_pos(imgui.ImVec2(0.5 * (x0 + x1), y0 + 14), imgui.Cond_.always.value, imgui.ImVec2(0.5, 0.0))
     imgui.begin("##note", None, NOTE_FLAGS)
     imgui.text_colored(AMBER, text)
     imgui.end()

@@ -5,9 +5,9 @@ from pathlib import Path
 
 from imgui_bundle import imgui
 
-from ..scenes import scene_files
-from .base import Section
-from .style import AMBER, DIM, RED
+from ..scenes import scene_files, user_scenes_dir
+from .base import Section, record
+from .style import AMBER, DIM, ENTER, RED
 
 
 class SceneSection(Section):
@@ -17,9 +17,10 @@ class SceneSection(Section):
     def __init__(self, app):
         super().__init__(app)
         self.open_path = ""
+        self.focus_save_as = False     # Ctrl+Shift+S: open the section and type in the Save-as field
 
     def force_open(self) -> bool:
-        return self.app.files.errors != []
+        return self.app.files.errors != [] or self.focus_save_as
 
     def draw(self):
         app, files = self.app, self.app.files
@@ -36,13 +37,17 @@ class SceneSection(Section):
         if imgui.button("Save (Ctrl+S)"):
             files.save()
         imgui.same_line()
-        if not files.save_as_path:
-            files.save_as_path = str(doc.path) if doc.path else "scenes/my_scene.json"
-        if imgui.button("Save as"):
-            files.save(Path(files.save_as_path))
+        save_as = imgui.button("Save as")
         imgui.same_line()
         imgui.set_next_item_width(-1)
-        _, files.save_as_path = imgui.input_text("##saveas", files.save_as_path)
+        if self.focus_save_as:
+            self.focus_save_as = False
+            imgui.set_scroll_here_y()
+            imgui.set_keyboard_focus_here()
+        entered, files.save_as_path = imgui.input_text("##saveas", files.save_as_path, ENTER)
+        record(app, "scene:save_as")
+        if save_as or entered:
+            files.save(Path(files.save_as_path))
         imgui.text_colored(DIM, "Or drop a .json scene file onto the window.")
         if files.errors:
             imgui.push_text_wrap_pos(0)
@@ -54,13 +59,24 @@ class SceneSection(Section):
                 files.errors = []
 
     def scene_list(self, doc):
-        files = scene_files()
-        if imgui.begin_list_box("##scenes", imgui.ImVec2(-1, min(8, max(2, len(files))) * 20 + 6)):
-            for f in files:
-                cur = doc.path is not None and Path(doc.path).resolve() == f.resolve()
-                clicked, _ = imgui.selectable(f.name, cur, imgui.SelectableFlags_.allow_double_click.value)
-                if clicked and imgui.is_mouse_double_clicked(0):
-                    self.app.files.request_open(f)
-                elif clicked:
-                    self.open_path = str(f)
+        """Shipped scenes (read-only: saving one writes to the user's folder) and the user's own."""
+        user_dir = user_scenes_dir()
+        groups = (("shipped (read-only)", scene_files()), (f"yours: {user_dir}", scene_files(user_dir)))
+        rows = sum(len(f) for _, f in groups) + 2
+        if imgui.begin_list_box("##scenes", imgui.ImVec2(-1, min(10, max(3, rows)) * 20 + 6)):
+            for title, files in groups:
+                imgui.text_colored(DIM, title)
+                if not files:
+                    imgui.text_colored(DIM, "  (none yet: save a scene)")
+                for f in files:
+                    self.scene_row(doc, f)
             imgui.end_list_box()
+
+    def scene_row(self, doc, f):
+        cur = doc.path is not None and Path(doc.path).resolve() == f.resolve()
+        clicked, _ = imgui.selectable(f"  {f.name}##{f}", cur, imgui.SelectableFlags_.allow_double_click.value)
+        record(self.app, f"scene:{f}")
+        if clicked and imgui.is_mouse_double_clicked(0):
+            self.app.files.request_open(f)
+        elif clicked:
+            self.open_path = str(f)

@@ -1,42 +1,56 @@
-"""The stats window: frame-time split, counts, and implot plots of the sampled series."""
+"""The stats window: frame-time split, counts, and time plots of the sampled series laid out in
+a grid that fills the window (drag its edges to resize it)."""
 from __future__ import annotations
 
-import numpy as np
-from imgui_bundle import imgui, implot
+import math
+
+from imgui_bundle import imgui
 
 from .base import record_window
-from .style import DIM, STATS_W
+from .plot import TimePlot
+from .style import DIM, PANEL_W, STATS_H
+
+MIN_PLOT_H = 150.0   # rows of plots are at least this high (px)
+MIN_PLOT_W = 170.0
 
 
-def plot(title, t, series, size):
-    """One implot line plot of ``series`` [(label, y)] over times ``t`` (s, ending at 0)."""
-    flags = (implot.Flags_.no_mouse_text | implot.Flags_.no_menus | implot.Flags_.no_box_select).value
-    if len(series) == 1:
-        flags |= implot.Flags_.no_legend.value
-    if implot.begin_plot(title, size, flags):
-        implot.setup_axes("", "", implot.AxisFlags_.no_tick_labels.value,
-                          implot.AxisFlags_.auto_fit.value)
-        implot.setup_axis_limits(implot.ImAxis_.x1.value, float(t[0]), 0.0, implot.Cond_.always.value)
-        if len(series) > 1:
-            implot.setup_legend(implot.Location_.north_east.value, implot.LegendFlags_.horizontal.value)
-        # at most ~120 points per line: llvmpipe pays for every plotted segment
-        k = max(1, len(t) // 120)
-        for label, y in series:
-            implot.plot_line(label, np.ascontiguousarray(t[::k], dtype=np.float64),
-                             np.ascontiguousarray(np.asarray(y)[::k], dtype=np.float64))
-        implot.end_plot()
+def stats_default_rect(width, height):
+    """The stats window's first place: a strip along the bottom, right of the side panel, so
+    the scene keeps a wide free area above it (x0, y0, x1, y1; y down)."""
+    return (PANEL_W + 16.0, height - 8.0 - STATS_H, width - 8.0, height - 8.0)
+
+
+def grid(n, width, height):
+    """(columns, rows) for ``n`` plots in a width x height area: as many rows as fit at
+    MIN_PLOT_H, the fewest columns that hold them all."""
+    rows = max(1, min(n, int(height // MIN_PLOT_H)))
+    cols = math.ceil(n / rows)
+    while cols > 1 and width / cols < MIN_PLOT_W and rows < n:
+        rows += 1
+        cols = math.ceil(n / rows)
+    return cols, math.ceil(n / cols)
 
 
 class StatsWindow:
+    """``plots`` hold what each drew last (rectangles, ticks, hover readout) for the status file."""
+
+    SERIES = (("step time (ms)", "ms", (("step", "step_ms"),)),
+              ("energy (J)", "J", (("KE", "ke"), ("PE", "pe"), ("total", None))),
+              ("momentum (kg m/s)", "kg m/s", (("|p|", "p"),)),
+              ("max penetration (m)", "m", (("depth", "pen"),)),
+              ("contacts", "", (("contacts", "contacts"),)))
+
     def __init__(self, app):
         self.app = app
+        self.plots = [TimePlot(title, unit) for title, unit, _ in self.SERIES]
 
     def draw(self):
         app = self.app
         io = imgui.get_io()
-        W = io.display_size.x
-        imgui.set_next_window_pos(imgui.ImVec2(W - 8, 8), imgui.Cond_.first_use_ever.value, imgui.ImVec2(1, 0))
-        imgui.set_next_window_size(imgui.ImVec2(STATS_W, 490), imgui.Cond_.first_use_ever.value)
+        x0, y0, x1, y1 = stats_default_rect(io.display_size.x, io.display_size.y)
+        imgui.set_next_window_pos(imgui.ImVec2(x0, y0), imgui.Cond_.first_use_ever.value)
+        imgui.set_next_window_size(imgui.ImVec2(x1 - x0, y1 - y0), imgui.Cond_.first_use_ever.value)
+        imgui.set_next_window_size_constraints(imgui.ImVec2(260, 160), imgui.ImVec2(1e5, 1e5))
         imgui.set_next_window_bg_alpha(0.82)
         expanded, _ = imgui.begin("Stats###stats", None)
         if expanded:
@@ -47,20 +61,25 @@ class StatsWindow:
     def contents(self):
         app = self.app
         ft = app.times.avg
-        imgui.text(f"{app.times.fps:5.1f} fps   frame {ft['frame']:.2f} ms")
-        imgui.text_colored(DIM, f"physics {ft['physics']:.2f}  upload {ft['upload']:.2f}  "
-                                f"draw {ft['draw']:.2f}  ui {ft['ui']:.2f} ms")
         info = app.sampler.info
-        imgui.text_colored(DIM, f"bodies {info.get('bodies', 0)}  awake {info.get('awake', 0)}  "
+        imgui.text(f"{app.times.fps:5.1f} fps   frame {ft['frame']:.2f} ms")
+        imgui.same_line()
+        imgui.text_colored(DIM, f"  physics {ft['physics']:.2f}  upload {ft['upload']:.2f}  "
+                                f"draw {ft['draw']:.2f}  ui {ft['ui']:.2f} ms   "
+                                f"bodies {info.get('bodies', 0)}  awake {info.get('awake', 0)}  "
                                 f"springs {info.get('springs', 0)}  pairs {info.get('contacts', 0)}")
         s = app.sampler.stats
         t, n = s.arrays()
-        if n > 1:
-            t = t - t[-1]
-            size = imgui.ImVec2(-1, 72)
-            plot("step time (ms)", t, [("step", s.get("step_ms"))], size)
-            plot("energy (J)", t, [("kinetic", s.get("ke")), ("potential", s.get("pe")),
-                                   ("total", s.get("ke") + s.get("pe"))], size)
-            plot("momentum (kg m/s)", t, [("|p|", s.get("p"))], size)
-            plot("max penetration (m)", t, [("depth", s.get("pen"))], size)
-            plot("contacts", t, [("contacts", s.get("contacts"))], size)
+        if n < 2:
+            return
+        t = t - t[-1]
+        avail = imgui.get_content_region_avail()
+        cols, rows = grid(len(self.plots), avail.x, avail.y)
+        sp = imgui.get_style().item_spacing
+        w = (avail.x - (cols - 1) * sp.x) / cols
+        h = max(60.0, (avail.y - (rows - 1) * sp.y) / rows)
+        for i, (plot, (_, _, keys)) in enumerate(zip(self.plots, self.SERIES)):
+            if i % cols:
+                imgui.same_line()
+            series = [(label, s.get(k) if k else s.get("ke") + s.get("pe")) for label, k in keys]
+            plot.draw(t, series, w, h)

@@ -8,8 +8,20 @@ AMBER = imgui.ImVec4(1.0, 0.8, 0.35, 1.0)
 DIM = imgui.ImVec4(0.62, 0.66, 0.72, 1.0)
 GREEN = imgui.ImVec4(0.5, 0.9, 0.6, 1.0)
 PANEL_W = 340          # the side panel's default width (px)
-STATS_W = 330          # the stats window's default width (px)
+STATS_H = 290          # the stats window's default height (px): a strip along the bottom
 ENTER = imgui.InputTextFlags_.enter_returns_true.value
+#: the side panel's longest fixed labels: widgets leave room for these, so no label is clipped
+#: (the solver settings' names are measured as well, see ``label_room``)
+LABELS = ("step rate (Hz)", "time scale", "new body kind", "click size (m)", "mouse joint Hz",
+          "restitution", "spring k", "n-gon sides", "angle (deg)", "angular vel.", "static friction",
+          "dynamic friction", "anchor a (local)", "anchor b (world)", "rest length", "narrow phase",
+          "broad phase", "integrator", "bound min (m)", "bound max (m)")
+
+
+def label_room(extra=()) -> float:
+    """Pixels to keep right of a widget for the longest label of ``LABELS`` and ``extra``."""
+    widest = max(imgui.calc_text_size(s).x for s in (*LABELS, *extra))
+    return widest + 2 * imgui.get_style().item_inner_spacing.x + 4
 
 
 def apply_style():

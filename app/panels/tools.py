@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
-from .base import Section
+from .base import Section, record
 from .style import DIM
 
 
@@ -25,6 +25,7 @@ class ToolsSection(Section):
                 imgui.push_style_color(imgui.Col_.button.value, imgui.ImVec4(0.85, 0.55, 0.2, 0.9))
             if imgui.button(f"{name}##tool", imgui.ImVec2(100, 0)):
                 ed.set_tool(name)
+            record(self.app, f"tool:{name}")
             if active:
                 imgui.pop_style_color()
             if ed.tools[name].droppable:

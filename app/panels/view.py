@@ -3,8 +3,8 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
-from .base import Section, record
-from .style import DIM
+from .base import Section, record, wrapped
+from .style import DIM, ENTER, RED
 
 OVERLAYS = (("contacts and normals (C)", "contacts"), ("AABBs (B)", "aabbs"), ("quadtree (Q)", "quadtree"),
             ("velocity arrows (V)", "velocities"), ("centres of mass (M)", "com"), ("springs", "springs"))
@@ -25,4 +25,29 @@ class ViewSection(Section):
         ch, app.panels.show_stats = imgui.checkbox("stats window", app.panels.show_stats)
         if imgui.button("Fit scene (F)"):
             app.fit()
+        self.bound(app)
         imgui.text_colored(DIM, "Pan: right/middle drag.  Zoom: wheel.  Undo: Ctrl+Z, redo: Ctrl+Shift+Z.")
+
+    def bound(self, app):
+        """The world bound: shown, editable; bodies that cross it are removed (undoable)."""
+        b = app.bound
+        imgui.separator_text("world bound")
+        _, b.shown = imgui.checkbox("show it", b.shown)
+        imgui.same_line()
+        _, b.enabled = imgui.checkbox("remove bodies that leave it", b.enabled)
+        ch1, lo = imgui.input_float2("bound min (m)", [float(v) for v in b.lo], "%.1f", ENTER)
+        record(app, "bound:min")
+        ch2, hi = imgui.input_float2("bound max (m)", [float(v) for v in b.hi], "%.1f", ENTER)
+        record(app, "bound:max")
+        if ch1 or ch2:
+            try:
+                b.set(lo, hi)
+                self.error = ""
+                app.notices.notify(f"world bound: {b.describe()}")
+            except ValueError as exc:
+                self.error = str(exc)
+                app.notices.notify(f"refused: {exc}", error=True)
+        if imgui.button("Bound from the scene"):
+            b.fit_scene(app.world.render_data())
+        if getattr(self, "error", ""):
+            wrapped(RED, self.error)

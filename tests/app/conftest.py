@@ -79,6 +79,7 @@ class AppProc:
     def __init__(self, env, tmp: Path, scene=None, args=()):
         self.env = env
         self.tmp = tmp
+        self.user_scenes = Path(env.get("XDG_DATA_HOME", tmp / "data")) / "stelkropp" / "scenes"
         self.status_file = tmp / "status.json"
         self.control_file = tmp / "control.jsonl"
         self.control_file.write_text("")
@@ -196,7 +197,9 @@ def launch(app_env, tmp_path):
     procs = []
 
     def _launch(scene=None, *args):
-        p = AppProc(app_env, tmp_path, scene, args)
+        # the user's scene folder (platformdirs' user data dir) is the test's own
+        env = dict(app_env, XDG_DATA_HOME=str(tmp_path / "data"))
+        p = AppProc(env, tmp_path, scene, args)
         procs.append(p)
         return p
     yield _launch

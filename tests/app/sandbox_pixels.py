@@ -7,9 +7,10 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 # colours (see app/render/colors.py): dynamic fills are blue, static grey-blue, selection orange
-def body_pixels(img: np.ndarray, x0=360, x1=940) -> int:
-    """How many pixels in the scene area (between the panels) look like a drawn body."""
-    area = img[:, x0:x1]
+def body_pixels(img: np.ndarray, x0=360, x1=1272, y0=0, y1=490) -> int:
+    """How many pixels in the scene area (default: the free area at 1280x800, right of the side
+    panel and above the stats strip) look like a drawn body."""
+    area = img[y0:y1, x0:x1]
     r, g, b = area[..., 0], area[..., 1], area[..., 2]
     blue = (b > 150) & (b > r + 40) & (g > 90)           # dynamic fill / outline
     grey = (abs(r - 74) < 14) & (abs(g - 83) < 14) & (abs(b - 97) < 14)   # static fill

@@ -152,4 +152,4 @@ def test_shipped_scene_renders_120_frames(scene, app_env, tmp_path):
     from PIL import Image
     img = np.asarray(Image.open(shot).convert("RGB")).astype(int)
     assert img.shape[:2] == (800, 1280)
-    assert body_pixels(img, 0, 1280) > 300, "nothing drawn"
+    assert body_pixels(img, 0, 1280, 0, 800) > 300, "nothing drawn"

@@ -55,12 +55,14 @@ def new_bodies(st, before):
 def test_scene_camera_fit_and_quadtree_overlay(launch, tmp_path):
     app = launch(tools_scene(tmp_path / "tools.json"), "--paused")
     st = app.wait_ready(20)
-    # the scene file's camera: its zoom, its centre in the middle of the area between the panels
-    left, right = st["free_area"]
-    assert left > 300 and right > 300, st["free_area"]
+    # the scene file's camera: its zoom, its centre in the middle of the free area beside the panels
+    fx0, fy0, fx1, fy1 = st["free_rect"]
+    main, stats = st["ui_rects"]["main_window"], st["ui_rects"]["stats_window"]
+    assert fx0 >= main[2] and (fy1 <= stats[1] or fx1 <= stats[0]), (st["free_rect"], main, stats)
+    assert (fx1 - fx0) * (fy1 - fy0) > 0.4 * W * H, "the free area is small"
     assert st["camera"]["scale"] == pytest.approx(CAMERA["zoom"])
     cx, cy = to_screen(st, CAMERA["center"])
-    assert cx == pytest.approx(0.5 * (left + W - right), abs=1.0) and cy == pytest.approx(H / 2, abs=1.0)
+    assert cx == pytest.approx(0.5 * (fx0 + fx1), abs=1.0) and cy == pytest.approx(0.5 * (fy0 + fy1), abs=1.0)
     # F fits every body into the free area (not under the panels)
     app.xdo("mousemove", 640, 300)
     app.key("f")
@@ -68,17 +70,19 @@ def test_scene_camera_fit_and_quadtree_overlay(launch, tmp_path):
     xs = [b["screen"][0] for b in st["bodies"]]
     ground = body(st, "ground")
     half = 8.0 * st["camera"]["scale"]                  # the ground is the widest body (16 m)
-    assert ground["screen"][0] - half > left - 2 and ground["screen"][0] + half < W - right + 2, (st["camera"], st["free_area"])
-    assert half > 0.7 * (W - left - right) / 2, "the fitted scene does not fill the free area"
-    assert min(xs) > left and max(xs) < W - right
+    assert ground["screen"][0] - half > fx0 - 2 and ground["screen"][0] + half < fx1 + 2, (st["camera"], st["free_rect"])
+    assert half > 0.7 * (fx1 - fx0) / 2, "the fitted scene does not fill the free area"
+    assert min(xs) > fx0 and max(xs) < fx1
+    ys = [b["screen"][1] for b in st["bodies"]]
+    assert min(ys) > fy0 and max(ys) < fy1
     # the quadtree overlay (Q): cells from world.quadtree_cells(), drawn as outlines
     before = app.screenshot("no_quadtree")
     app.key("q")
     st = app.wait(lambda s: s["overlays"]["quadtree"] and s["quadtree_cells"] > 0, 10, "the quadtree overlay")
     app.frames(3)
     img = app.screenshot("quadtree")
-    x0, x1 = int(left), int(W - right)
-    assert purple_pixels(img, x0, 0, x1, H) > 300 + purple_pixels(before, x0, 0, x1, H)
+    x0, y0, x1, y1 = map(int, st["free_rect"])
+    assert purple_pixels(img, x0, y0, x1, y1) > 300 + purple_pixels(before, x0, y0, x1, y1)
     app.key("q")
     st = app.wait(lambda s: not s["overlays"]["quadtree"], 10, "the overlay off")
     assert not st["gl_errors"] and not st["fault"]

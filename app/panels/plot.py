@@ -1,0 +1,90 @@
+"""One readable time plot (implot): a labelled time axis, y ticks spaced so their labels never
+overlap, the legend outside the curves, and a readout of every series under the pointer."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from imgui_bundle import imgui, implot
+
+TICK_PX = 28.0      # at least this many pixels between y tick labels (the font is 13 px high)
+MAX_POINTS = 120    # points per line: llvmpipe pays for every plotted segment
+
+
+def nice_ticks(lo: float, hi: float, max_ticks: int) -> np.ndarray:
+    """Tick values 1, 2 or 5 x 10^k apart covering [lo, hi], at most ``max_ticks`` of them (>= 2)."""
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        lo, hi = 0.0, 1.0
+    if hi - lo < 1e-12 * max(1.0, abs(hi)):
+        pad = max(abs(hi) * 0.1, 1e-3)
+        lo, hi = lo - pad, hi + pad
+    max_ticks = max(2, max_ticks)
+    raw = (hi - lo) / (max_ticks - 1)
+    mag = 10.0 ** math.floor(math.log10(raw))
+    for m in (1.0, 2.0, 5.0, 10.0, 20.0):
+        step = m * mag
+        t0, t1 = math.floor(lo / step) * step, math.ceil(hi / step) * step
+        if round((t1 - t0) / step) + 1 <= max_ticks:
+            break
+    n = int(round((t1 - t0) / step)) + 1
+    return t0 + step * np.arange(n)
+
+
+def readout(t, series, x):
+    """The sample nearest time ``x``: (its time, {label: value})."""
+    i = int(np.clip(np.searchsorted(t, x), 0, len(t) - 1))
+    if i > 0 and abs(t[i - 1] - x) < abs(t[i] - x):
+        i -= 1
+    return float(t[i]), {label: float(np.asarray(y)[i]) for label, y in series}
+
+
+class TimePlot:
+    """Draws one plot; ``last`` describes it after drawing (for the status file and tests):
+    frame rectangle, number of y ticks and their spacing in pixels, hover readout."""
+
+    def __init__(self, title, unit):
+        self.title = title
+        self.unit = unit
+        self.last: dict = {}
+
+    def draw(self, t, series, width, height):
+        """``t``: sample times (s, the newest 0); ``series``: [(label, values)]."""
+        flags = (implot.Flags_.no_mouse_text | implot.Flags_.no_menus | implot.Flags_.no_box_select).value
+        if len(series) == 1:
+            flags |= implot.Flags_.no_legend.value
+        ys = [np.asarray(y, dtype=np.float64) for _, y in series]
+        lo, hi = min(float(y.min()) for y in ys), max(float(y.max()) for y in ys)
+        area_h = max(20.0, height - 46.0)          # the frame minus the title and the time axis
+        ticks = nice_ticks(lo, hi, int(area_h // TICK_PX) + 1)
+        self.last = {"title": self.title, "ticks": len(ticks), "tick_px": area_h / max(1, len(ticks) - 1)}
+        if not implot.begin_plot(f"{self.title}##stats", imgui.ImVec2(width, height), flags):
+            return
+        implot.setup_axes("time (s)", "", 0, 0)
+        implot.setup_axis_limits(implot.ImAxis_.x1.value, float(t[0]), 0.0, implot.Cond_.always.value)
+        implot.setup_axis_limits(implot.ImAxis_.y1.value, float(ticks[0]), float(ticks[-1]), implot.Cond_.always.value)
+        implot.setup_axis_ticks(implot.ImAxis_.y1.value, [float(v) for v in ticks])
+        implot.setup_axis_format(implot.ImAxis_.y1.value, "%.3g")
+        if len(series) > 1:
+            implot.setup_legend(implot.Location_.north.value,
+                                (implot.LegendFlags_.outside | implot.LegendFlags_.horizontal).value)
+        k = max(1, len(t) // MAX_POINTS)
+        tx = np.ascontiguousarray(t[::k], dtype=np.float64)
+        for (label, _), y in zip(series, ys):
+            implot.plot_line(label, tx, np.ascontiguousarray(y[::k]))
+        pos, size = implot.get_plot_pos(), implot.get_plot_size()
+        self.last["rect"] = (pos.x, pos.y, pos.x + size.x, pos.y + size.y)
+        if implot.is_plot_hovered():
+            self.hover(t, series)
+        implot.end_plot()
+
+    def hover(self, t, series):
+        """A vertical line at the pointer's time and a tooltip with every series' value there."""
+        x = implot.get_plot_mouse_pos().x
+        when, values = readout(t, series, x)
+        implot.plot_inf_lines("##cursor", np.array([when]))
+        imgui.begin_tooltip()
+        imgui.text(f"{-when:.2f} s ago")
+        for label, v in values.items():
+            imgui.text(f"{label}: {v:.4g} {self.unit}")
+        imgui.end_tooltip()
+        self.last["hover"] = {"t": when, "values": values}
