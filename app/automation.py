@@ -6,6 +6,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import numpy as np
+
 import physics
 import pyglet
 from OpenGL import GL
@@ -27,7 +29,7 @@ def _bodies(app):
     out = []
     for b in app.world.bodies:
         sp = app.camera.to_screen(b.position)
-        out.append({"id": b.id, "name": b.name, "kind": b.kind, "position": b.position,
+        out.append({"id": b.id, "name": b.name, "kind": b.kind, "position": b.position, "angle": b.angle,
                     "screen": [float(sp[0]), float(app.height - sp[1])],
                     "shape": b.shape.kind, "density": b.density,
                     "vertices": 0 if isinstance(b.shape, physics.Circle) else len(b.shape.vertices)})
@@ -55,6 +57,9 @@ def status(app) -> dict:
         "free_rect": list(app.free_rect()), "edit_error": ed.edit_error, "status_every": STATUS_EVERY,
         "save_as": app.files.save_as_path, "dialog": app.panels.dialogs.open_title,
         "user_scenes": [str(p) for p in scene_files(user_scenes_dir())],
+        "ui_values": app.ui_values, "awake": int(np.count_nonzero(w.state()["awake"])) if app.warmup.ready else 0,
+        "speed": app.sim.speed, "hint": app.editor.hint_text(), "scene_keys": app.input.scene_keys,
+        "dt": w.dt,
         "bound": {"lo": app.bound.lo.tolist(), "hi": app.bound.hi.tolist(), "enabled": app.bound.enabled,
                   "shown": app.bound.shown},
         "plots": [p.last for p in app.panels.stats.plots] if app.panels.show_stats else [],

@@ -1,8 +1,9 @@
 """Autosave every minute to the user's cache directory; offer the autosave after a crash.
 
-A session marker (``session.json`` with our pid) exists while the sandbox runs
-and is removed on a clean exit; finding one from a dead process at start means
-the last session crashed, and its autosave (if any) is offered.
+Each running sandbox has its own session marker (``session-<pid>.json``, naming its pid) and its
+own autosave (``autosave-<pid>.json``); a clean exit removes both.  At start, a marker whose
+process is dead means that session crashed, and its autosave (if any) is offered.  A marker of
+a sandbox that is still running is never offered: its autosave is that instance's work.
 """
 from __future__ import annotations
 
@@ -31,25 +32,32 @@ class Autosaver:
     def __init__(self, interval: float = 60.0, directory: Path | None = None):
         self.dir = Path(directory) if directory else cache_dir()
         self.interval = interval
-        self.file = self.dir / "autosave.json"
-        self.marker = self.dir / "session.json"
+        self.file = self.dir / f"autosave-{os.getpid()}.json"
+        self.marker = self.dir / f"session-{os.getpid()}.json"
         self.last = time.monotonic()
         self.last_version = None
         self.error = None
 
     def previous_crash(self):
-        """(autosave path, mtime, original scene path) if the last session died with an autosave."""
-        try:
-            info = json.loads(self.marker.read_text())
-        except (OSError, ValueError):
+        """(autosave path, mtime, original scene path) of the newest session that died with an
+        autosave, or None.  Running sessions (their pid is alive) are skipped."""
+        found = []
+        for marker in self.dir.glob("session-*.json"):
+            try:
+                info = json.loads(marker.read_text())
+            except (OSError, ValueError):
+                continue
+            pid = int(info.get("pid", -1))
+            if pid != os.getpid() and _pid_alive(pid):
+                continue   # another sandbox is running: not a crash
+            autosave = marker.with_name("autosave-" + marker.name[len("session-"):])
+            if autosave.exists():
+                found.append((autosave.stat().st_mtime, autosave, info.get("origin"), marker))
+        if not found:
             return None
-        pid = int(info.get("pid", -1))
-        if pid != os.getpid() and _pid_alive(pid):
-            return None   # another sandbox is running
-        if self.file.exists():
-            return self.file, self.file.stat().st_mtime, info.get("origin")
-        return None
-
+        mtime, autosave, origin, marker = max(found, key=lambda f: f[0])
+        self.crashed_marker = marker
+        return autosave, mtime, origin
     def begin_session(self, origin=None):
         try:
             self.dir.mkdir(parents=True, exist_ok=True)
@@ -82,10 +90,13 @@ class Autosaver:
             self.error = f"autosave failed: {exc}"
             return False
 
-    def discard(self):
-        for f in (self.file,):
+    def discard(self, path=None):
+        """Delete an autosave (default: this session's) and, for a crashed one, its marker."""
+        files = [self.file] if path is None else [Path(path), getattr(self, "crashed_marker", None)]
+        for f in files:
             try:
-                f.unlink()
+                if f is not None:
+                    f.unlink()
             except OSError:
                 pass
 

@@ -2,6 +2,8 @@
 (every change goes through a command, so it can be undone).  No windowing or drawing here."""
 from __future__ import annotations
 
+import time
+
 import numpy as np
 
 import physics
@@ -10,6 +12,11 @@ from .commands import AddBody, Group, RemoveBodies, RemoveSpring, SetProperty, S
 from .document import Document
 from .render.decor import Decor
 from .tools import TOOLS, ToolOptions
+
+#: the step rates the sandbox accepts (Hz): below 10 Hz contacts at walking speeds tunnel; above
+#: 1000 Hz a frame (at most 4 steps) covers under 7 ms of simulated time, a slide show
+STEP_RATE = (10.0, 1000.0)
+HINT_SECONDS = 5.0
 
 
 class Editor:
@@ -30,6 +37,7 @@ class Editor:
         self.tool_names = [cls.name for cls in TOOLS]
         self.tool = self.tools["select"]
         self.edit_error = ""                   # the last refused edit, shown in the inspector
+        self._hint = None                      # (text, world point, time, error) shown at the pointer
         self.on_document: list = []
         self.on_mode: list = []
 
@@ -43,6 +51,24 @@ class Editor:
 
     def notify(self, text, error=False):
         self.notices.notify(text, error)
+
+    def hint(self, text, at=None, error=True):
+        """Say why an input was refused (or what was done instead) next to where the user is
+        looking: world point ``at`` (default: the pointer), for HINT_SECONDS; also a message."""
+        p = np.array(self.cursor if at is None else at, dtype=np.float64)
+        self._hint = (text, p, time.monotonic(), error)
+        self.notify(text, error)
+
+    def current_hint(self):
+        """(text, world point, is_error) of the hint still shown, or None."""
+        h = self._hint
+        if h is None or time.monotonic() - h[2] > HINT_SECONDS:
+            return None
+        return h[0], h[1], h[3]
+
+    def hint_text(self):
+        h = self.current_hint()
+        return h[0] if h else None
 
     def set_document(self, world, path, keep_camera=False):
         """Replace the document (open, reset, restore); the history starts empty."""
@@ -64,7 +90,7 @@ class Editor:
         try:
             self.execute(cmd)
         except ValueError as exc:
-            self.notify(f"refused: {exc}", error=True)
+            self.hint(f"refused: {exc}")
             return
         obj = getattr(cmd, "ref", None)
         if obj is not None:
@@ -149,10 +175,13 @@ class Editor:
             self.execute(Group(cmds, "toggle static/dynamic"))
 
     def switch_solver(self, mode):
+        """Switch the solver mode (undoable).  The switch wakes every body: a sleeping pile would
+        otherwise show nothing of the new mode (until the core wakes the world itself)."""
         w = self.world
 
         def setter(m):
             w.solver = m
+            w.wake_all()
         try:
             self.execute(SetWorld(lambda: w.solver, setter, mode, "solver"))
         except (ValueError, ImportError) as exc:
@@ -161,6 +190,16 @@ class Editor:
         for cb in self.on_mode:
             cb(mode, w.integrator)
         self.notify(f"solver: {mode}")
+
+    def set_step_rate(self, hz) -> bool:
+        """The step rate in Hz (dt = 1/hz), within STEP_RATE; out of range is refused with a message."""
+        lo, hi = STEP_RATE
+        if not (isinstance(hz, (int, float)) and lo <= hz <= hi):
+            self.edit_error = f"step rate must be between {lo:g} and {hi:g} Hz (got {hz:g} Hz)"
+            self.notify(f"refused: {self.edit_error}", error=True)
+            return False
+        w = self.world
+        return self.set_world("dt", 1.0 / hz, lambda v: setattr(w, "dt", v), lambda: w.dt)
 
     # -- selection and tools -----------------------------------------------------------
     def select(self, item, add=False):

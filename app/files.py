@@ -95,15 +95,19 @@ class SceneFiles:
         self.confirm_unsaved("Reset to the loaded state?", self.reset)
 
     def reset(self):
+        """Back to the loaded state, keeping the solver choice (the Solver panel: mode, every
+        mode's settings, integrator, broad and narrow phase, sleeping) and the view."""
         ed = self.editor
         loaded = ed.doc.loaded
         path = ed.doc.path
         ed.tool.cancel()
-        meta = dict(ed.world.metadata)
+        old = ed.world
+        meta = dict(old.metadata)
         world = restore(loaded)
         world.metadata.update(meta)    # name, description, camera: kept by a later save
+        keep_solver_choice(old, world)
         ed.set_document(world, path, keep_camera=True)
-        ed.notify("reset to the loaded state")
+        ed.notify(f"reset to the loaded state (solver {world.solver} kept)")
 
     def restore_autosave(self, path, origin):
         try:
@@ -113,4 +117,21 @@ class SceneFiles:
             return
         self.editor.set_document(world, Path(origin) if origin else None)
         self.editor.doc.history.version += 1   # restored edits are unsaved
+        self.autosaver.discard(path)           # offered once: its edits are this session's now
         self.editor.notify("autosave restored (unsaved)")
+
+
+SOLVER_CHOICE = ("integrator", "broadphase", "narrowphase", "sleeping")
+
+
+def keep_solver_choice(old, new):
+    """Give ``new`` the solver mode, every mode's settings and the other Solver-panel choices of
+    ``old`` (a reset must not undo the comparison the user is making)."""
+    for name in old.solvers:
+        try:
+            new.settings_for(name).update(old.settings_for(name).to_dict())
+        except (ValueError, KeyError, ImportError):
+            pass
+    new.solver = old.solver
+    for attr in SOLVER_CHOICE:
+        setattr(new, attr, getattr(old, attr))

@@ -7,9 +7,12 @@ from pathlib import Path
 import numpy as np
 import pyglet
 from imgui_bundle import imgui
-from pyglet.window import mouse
+from pyglet.window import key, mouse
 
 from .shortcuts import handle_key
+
+MODIFIER_KEYS = {key.LSHIFT, key.RSHIFT, key.LCTRL, key.RCTRL, key.LALT, key.RALT, key.LMETA, key.RMETA,
+                 key.LWINDOWS, key.RWINDOWS, key.CAPSLOCK, key.NUMLOCK}
 
 
 class SceneInput:
@@ -20,6 +23,13 @@ class SceneInput:
         self.cursor_px = np.array([app.width * 0.6, app.height * 0.5])
         self.panning = None
         self.tool_active = False
+        # keyboard focus: shortcuts fire only while the scene has it.  A press on a panel takes it
+        # (keys typed into a field that has not or no longer has the keyboard must not act on the
+        # scene); a press in the scene, Esc, or moving the pointer into the scene once no text
+        # field is active gives it back; a press on a panel that activated no text field too.
+        self.scene_keys = True
+        self._panel_press_frame = None
+        self._text_used = False
 
     @property
     def editor(self):
@@ -29,7 +39,7 @@ class SceneInput:
         try:
             fn(*args)
         except ValueError as exc:
-            self.editor.notify(f"refused: {exc}", error=True)
+            self.editor.hint(f"refused: {exc}")
 
     def on_panel(self, x, y) -> bool:
         """Does a pointer event at window pixel (x, y) (pyglet's, y up) land on a panel?  Judged
@@ -53,14 +63,37 @@ class SceneInput:
             ed.hovered = None
 
     # -- pyglet events ---------------------------------------------------------------
+    def after_frame(self):
+        """Follow the panels' keyboard use (called once per frame after the UI is drawn)."""
+        io = imgui.get_io()
+        if io.want_text_input:
+            self.scene_keys = False
+            self._text_used = True
+        elif (not self.scene_keys and not self._text_used and self._panel_press_frame is not None
+              and self.app.frame_no > self._panel_press_frame + 1):
+            self.scene_keys = True          # the press on the panel was a button, not a text field
+
+    def _take_keys(self):
+        self.scene_keys = True
+        self._text_used = False
+        self._panel_press_frame = None
+
     def on_mouse_motion(self, x, y, dx, dy):
         self.cursor_px = np.array([x, y], dtype=float)
         self.editor.cursor = self.app.camera.to_world(x, y)
+        if not self.scene_keys and (dx or dy) and not imgui.get_io().want_text_input \
+                and not self.on_panel(x, y):
+            self._take_keys()
 
     def on_mouse_press(self, x, y, button, modifiers):
         self.on_mouse_motion(x, y, 0, 0)
+        if self.on_panel(x, y):
+            self.scene_keys = False
+            self._text_used = False
+            self._panel_press_frame = self.app.frame_no
         if not self.scene_mouse(x, y):
             return
+        self._take_keys()
         if button in (mouse.RIGHT, mouse.MIDDLE):
             self.panning = (x, y)
             return
@@ -101,6 +134,14 @@ class SceneInput:
 
     def on_key_press(self, symbol, modifiers):
         io = imgui.get_io()
-        if not (io.want_capture_keyboard or not self.app.warmup.ready):
+        if io.want_capture_keyboard or not self.app.warmup.ready:
+            return pyglet.event.EVENT_HANDLED
+        ctrl = modifiers & (key.MOD_CTRL | key.MOD_COMMAND)
+        if symbol == key.ESCAPE:
+            self._take_keys()
+        if self.scene_keys or ctrl:
             handle_key(self.app, symbol, modifiers)
+        elif symbol not in MODIFIER_KEYS:
+            self.editor.hint("keys go to the panels now: click the scene (or move the pointer into it) "
+                             "for shortcuts", error=False)
         return pyglet.event.EVENT_HANDLED     # never the window's default (Esc would close it)

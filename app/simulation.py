@@ -24,6 +24,7 @@ class Simulation:
         self.time_scale = 1.0
         self.accumulator = 0.0
         self.fault = None
+        self.speed = 1.0                       # measured simulated s per real s (running average)
         self.lock = lock if lock is not None else threading.Lock()   # shared with the warmup thread
         self.compiling_note = ""
         self.quadtree = np.zeros((0, 4))       # the last quadtree cells drawn (overlay Q)
@@ -70,33 +71,40 @@ class Simulation:
 
     def advance(self, real_dt, velocities=False):
         """Steps owed for ``real_dt`` real seconds (at most MAX_STEPS_PER_FRAME: slow motion rather
-        than a spiral when we cannot keep up).  Returns (physics ms, steps taken)."""
+        than a spiral when we cannot keep up).  Returns (physics ms, steps taken); ``speed``
+        follows the simulated time per real time actually achieved."""
+        if not self.running:
+            return 0.0, 0
         w = self.editor.world
-        phys_ms = 0.0
-        steps = 0
-        if self.running:
-            self.accumulator += min(real_dt, 0.25) * self.time_scale
-            steps = int(self.accumulator / w.dt)
-            if steps > MAX_STEPS_PER_FRAME:
-                steps = MAX_STEPS_PER_FRAME
-                self.accumulator = 0.0
-            else:
-                self.accumulator -= steps * w.dt
-            if steps:
-                if velocities:
-                    before = w.render_data()
-                    x0, ids0, t0 = before.center.copy(), before.ids.copy(), w.time
-                phys_ms = self.step(steps)
-                if velocities:
-                    # the arrows: each body's displacement over this frame's steps / the time
-                    # stepped, from the render arrays (no per-body Python handles)
-                    after = w.render_data()
-                    if w.time > t0 and np.array_equal(after.ids, ids0):
-                        self.velocities = (after.center - x0) / (w.time - t0)
-                        self._vel_key = ("stepped", self.editor.doc.history.version, w.steps, len(ids0))
-                    else:
-                        self.velocities = None
+        t_sim = w.time
+        self.accumulator += min(real_dt, 0.25) * self.time_scale
+        steps = int(self.accumulator / w.dt)
+        if steps > MAX_STEPS_PER_FRAME:
+            steps = MAX_STEPS_PER_FRAME
+            self.accumulator = 0.0
+        else:
+            self.accumulator -= steps * w.dt
+        phys_ms = self._steps_with_arrows(steps) if velocities else (self.step(steps) if steps else 0.0)
+        if real_dt > 0:
+            self.speed = 0.9 * self.speed + 0.1 * (w.time - t_sim) / min(real_dt, 0.25)
         return phys_ms, steps
+
+    def _steps_with_arrows(self, steps) -> float:
+        """Step, and keep each body's displacement over the steps / the time stepped for the
+        velocity arrows, from the render arrays (no per-body Python handles)."""
+        if not steps:
+            return 0.0
+        w = self.editor.world
+        before = w.render_data()
+        x0, ids0, t0 = before.center.copy(), before.ids.copy(), w.time
+        phys_ms = self.step(steps)
+        after = w.render_data()
+        if w.time > t0 and np.array_equal(after.ids, ids0):
+            self.velocities = (after.center - x0) / (w.time - t0)
+            self._vel_key = ("stepped", self.editor.doc.history.version, w.steps, len(ids0))
+        else:
+            self.velocities = None
+        return phys_ms
 
     def body_velocities(self, rd):
         """Velocities for the arrow overlay, in render-data order.  While running, the displacement

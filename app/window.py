@@ -56,6 +56,7 @@ class Sandbox(pyglet.window.Window):
         self.notices = Notices()
         self.show_ui = True
         self.ui_rects: dict[str, tuple] = {}
+        self.ui_values: dict[str, object] = {}   # what some widgets show (the status file reports it)
         self.gl_errors: list[str] = []
         self.frame_no = 0
         self.rd_ids = np.zeros(0, np.int64)
@@ -233,6 +234,7 @@ class Sandbox(pyglet.window.Window):
             overlay_note(self, self.sim.compiling_note)
         imgui.render()
         self.panels.hits.refresh()       # where the panels are now: the next events are routed by it
+        self.input.after_frame()
         self.gui.render(imgui.get_draw_data())
 
     # -- window events ---------------------------------------------------------------

@@ -88,7 +88,7 @@ class Dialogs:
         if imgui.button("Discard it"):
             self.autosave_offer = None
             imgui.close_current_popup()
-            self.app.autosaver.discard()
+            self.app.autosaver.discard(path)
         imgui.end_popup()
 
     def scene_errors(self):

@@ -8,7 +8,7 @@ from .base import record_window
 from .dialogs import Dialogs
 from .hits import PanelHits
 from .inspector import InspectorSection
-from .notes import messages, progress_window
+from .notes import cursor_hint, messages, progress_window
 from .scene import SceneSection
 from .simulation import SimulationSection
 from .solver import SolverSection
@@ -61,6 +61,7 @@ class Panels:
         if self.show_stats:
             self.stats.draw()
         messages(app)
+        cursor_hint(app)
         self.dialogs.draw()
         self.tools.drop()
 

@@ -11,6 +11,11 @@ from .base import Section, record
 from .style import DIM, ENTER, RED
 
 
+def wrap_degrees(deg: float) -> float:
+    """An angle in degrees wrapped into [-180, 180] (a spinning body's angle grows without bound)."""
+    return math.remainder(deg, 360.0) if math.isfinite(deg) else deg
+
+
 class InspectorSection(Section):
     title = "Inspector"
 
@@ -37,8 +42,7 @@ class InspectorSection(Section):
         imgui.same_line()
         if imgui.button("Duplicate (Ctrl+D)"):
             ed.duplicate_selection()
-        if isinstance(item, physics.Body):
-            imgui.same_line()
+        if isinstance(item, physics.Body):       # on its own line: three buttons do not fit
             if imgui.button("Static/Dynamic (T)"):
                 ed.toggle_static()
 
@@ -58,9 +62,12 @@ class InspectorSection(Section):
         ch, v = imgui.input_float2("position", list(b.position), "%.3f", ENTER)
         if ch:
             self.edit(b, "position", tuple(v))
-        ch, v = imgui.input_float("angle (deg)", math.degrees(b.angle), 5.0, 45.0, "%.2f", ENTER)
+        shown = wrap_degrees(math.degrees(b.angle))
+        self.app.ui_values["inspector:angle"] = shown
+        ch, v = imgui.input_float("angle (deg)", shown, 5.0, 45.0, "%.2f", ENTER)
+        record(self.app, "inspector:angle")
         if ch:
-            self.edit(b, "angle", math.radians(v))
+            self.edit(b, "angle", math.radians(wrap_degrees(v)))
         ch, v = imgui.input_float2("velocity", list(b.velocity), "%.3f", ENTER)
         if ch:
             self.edit(b, "velocity", tuple(v))

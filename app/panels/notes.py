@@ -54,3 +54,24 @@ def progress_window(app):
     imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")
     imgui.text_colored(DIM, f"{label}{dots}  ({app.warmup.elapsed():.0f} s)")
     imgui.end()
+
+
+def cursor_hint(app):
+    """The editor's hint (why an input was refused) beside the point it is about."""
+    h = app.editor.current_hint()
+    if h is None:
+        app.ui_rects.pop("hint", None)
+        return
+    text, p, error = h
+    sx, sy = app.camera.to_screen(p)
+    imgui.set_next_window_pos(imgui.ImVec2(float(sx) + 16, app.height - float(sy) - 10),
+                              imgui.Cond_.always.value, imgui.ImVec2(0.0, 1.0))
+    imgui.set_next_window_bg_alpha(0.9)
+    imgui.set_next_window_size_constraints(imgui.ImVec2(0, 0), imgui.ImVec2(360, 400))
+    imgui.begin("##hint", None, NOTE_FLAGS)
+    imgui.push_text_wrap_pos(340)
+    imgui.text_colored(RED if error else AMBER, text)
+    imgui.pop_text_wrap_pos()
+    a, b = imgui.get_window_pos(), imgui.get_window_size()
+    app.ui_rects["hint"] = (a.x, a.y, a.x + b.x, a.y + b.y)
+    imgui.end()

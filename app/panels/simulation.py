@@ -3,11 +3,13 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
-from .base import Section
-from .style import DIM, ENTER, RED
+from .base import Section, record, wrapped
+from .style import AMBER, DIM, ENTER, RED
 
 
 class SimulationSection(Section):
+    """``speed``: simulated seconds per real second, measured; amber when the sandbox cannot keep
+    up with the time scale (more steps a frame are owed than it takes)."""
     title = "Simulation"
 
     def draw(self):
@@ -26,16 +28,30 @@ class SimulationSection(Section):
                                    imgui.SliderFlags_.logarithmic.value)
         if ch:
             sim.time_scale = v
+        self.speed(sim)
         ch, hz = imgui.input_float("step rate (Hz)", 1.0 / w.dt, 10.0, 60.0, "%.1f", ENTER)
+        record(app, "sim:step_rate")
         if ch:
-            app.editor.set_world("dt", 1.0 / hz if hz > 0 else -1.0, lambda v: setattr(w, "dt", v),
-                                 lambda: w.dt)
+            app.editor.set_step_rate(hz)
         g = list(w.gravity)
         ch, g = imgui.input_float2("gravity", g, "%.2f", ENTER)
         if ch:
             app.editor.set_world("gravity", tuple(g), lambda v: setattr(w, "gravity", v), lambda: w.gravity)
+        if app.editor.edit_error and not app.editor.selection:
+            wrapped(RED, app.editor.edit_error)
         if sim.fault:
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(RED, f"Simulation error: {sim.fault}")
             imgui.text_colored(DIM, "The world was reverted to the last good state and paused.")
             imgui.pop_text_wrap_pos()
+
+    @staticmethod
+    def speed(sim):
+        if not sim.running:
+            return
+        slow = sim.speed < 0.9 * sim.time_scale
+        imgui.same_line()
+        imgui.text_colored(AMBER if slow else DIM, f"runs {sim.speed:.2f}x")
+        if slow and imgui.is_item_hovered():
+            imgui.set_tooltip("The sandbox takes at most 4 steps a frame: at this step rate and "
+                              "time scale the simulation runs slower than asked.")

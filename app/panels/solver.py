@@ -5,6 +5,8 @@ from imgui_bundle import imgui
 
 from physics import options
 
+from .. import reliability
+
 from .base import Section, record
 from .style import DIM
 
@@ -59,11 +61,13 @@ class SolverSection(Section):
                 if clicked and m != w.solver:
                     ed.switch_solver(m)
             imgui.end_combo()
-        desc = mode_description(w.solver)
+        desc = " ".join(t for t in (mode_description(w.solver), reliability.summary(w.solver)) if t)
+        app.ui_values["solver:description"] = desc
         if desc:
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(DIM, desc)
             imgui.pop_text_wrap_pos()
+            record(app, "solver:description")
         self.settings(w)
         for label, attr, choices in WORLD_CHOICES:
             opts = list(choices)

@@ -11,7 +11,8 @@ from .base import PREVIEW, PREVIEW_DIM, Tool, body_args
 
 class PolygonTool(Tool):
     name = "polygon"
-    help = "click points; Enter (or click the first point) makes their convex hull; Esc cancels"
+    help = ("click points; Enter (or click the first point) makes their convex hull (a concave "
+            "outline becomes its hull until compound shapes land); Backspace removes a point; Esc cancels")
 
     def __init__(self, editor):
         super().__init__(editor)
@@ -19,25 +20,38 @@ class PolygonTool(Tool):
 
     def press(self, p, button, mods):
         p = np.array(p, dtype=float)
-        if len(self.points) >= 3 and np.hypot(*(p - self.points[0])) * self.editor.camera.scale < 10:
+        scale = self.editor.camera.scale
+        if len(self.points) >= 3 and np.hypot(*(p - self.points[0])) * scale < 10:
             self.finish()
+            return
+        if self.points and np.hypot(*(p - self.points[-1])) * scale < 4:
+            self.editor.hint("that point is on the last one: click somewhere else", at=p)
             return
         self.points.append(p)
 
     def finish(self):
-        pts = np.array(self.points)
-        self.points = []
-        if len(pts) < 3:
+        """Make the polygon: the convex hull of the points, centred on its centroid.  Every refusal
+        says why beside the last point and keeps the points, so the user can go on clicking."""
+        ed = self.editor
+        at = self.points[-1] if self.points else None
+        if len(self.points) < 3:
+            have = f"{len(self.points)} so far" if self.points else "none yet"
+            ed.hint(f"a polygon needs at least 3 points ({have}): click more, Esc cancels", at=at)
             return
+        pts = np.array(self.points)
         try:
             shape = physics.Polygon.hull(pts)
         except ValueError as exc:
-            self.editor.notify(f"polygon refused: {exc}", error=True)
+            ed.hint(f"no polygon: {exc}. Click another point, Backspace removes the last, Esc cancels", at=at)
             return
-        # vertices about the centroid, body placed at the centroid
-        c = shape.centroid
+        self.points = []
+        c = shape.centroid            # vertices about the centroid, body placed at the centroid
         shape = physics.Polygon(shape.vertices - c)
-        self.editor.create(AddBody({"shape": shape, **body_args(self.editor.tool_options, c)}, "create polygon"))
+        n_before = len(ed.world.bodies)
+        ed.create(AddBody({"shape": shape, **body_args(ed.tool_options, c)}, "create polygon"))
+        if len(shape.vertices) < len(pts) and len(ed.world.bodies) > n_before:
+            ed.hint(f"made the convex hull of the outline ({len(shape.vertices)} of {len(pts)} points): "
+                    "concave bodies come with compound shapes", at=at, error=False)
 
     def key(self, symbol) -> bool:
         from pyglet.window import key as K

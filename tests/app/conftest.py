@@ -69,23 +69,28 @@ def app_env(display, tmp_path_factory):
     env = dict(os.environ)
     env["DISPLAY"] = display
     env.pop("PYOPENGL_PLATFORM", None)
-    env["XDG_CACHE_HOME"] = str(tmp_path_factory.mktemp("cache"))
+    cache = tmp_path_factory.mktemp("cache")
+    env["XDG_CACHE_HOME"] = str(cache)
+    # the compiled kernels stay in one place for the session even where a test gives the sandbox
+    # its own XDG_CACHE_HOME (autosaves)
+    env.setdefault("STELKROPP_CACHE_DIR", str(cache / "stelkropp"))
     return env
 
 
 class AppProc:
     """One sandbox process at the top-left corner of the Xvfb screen."""
 
-    def __init__(self, env, tmp: Path, scene=None, args=()):
+    def __init__(self, env, tmp: Path, scene=None, args=(), offer_autosave=False):
         self.env = env
         self.tmp = tmp
         self.user_scenes = Path(env.get("XDG_DATA_HOME", tmp / "data")) / "stelkropp" / "scenes"
         self.status_file = tmp / "status.json"
         self.control_file = tmp / "control.jsonl"
+        tmp.mkdir(parents=True, exist_ok=True)
         self.control_file.write_text("")
         cmd = [sys.executable, "-m", "app"] + ([str(scene)] if scene else []) + [
             "--position", "0,0", "--size", "1280x800", "--status", str(self.status_file),
-            "--control", str(self.control_file), "--no-autosave-offer", *args]
+            "--control", str(self.control_file), *([] if offer_autosave else ["--no-autosave-offer"]), *args]
         self.log = open(tmp / "app.log", "w")
         self.proc = subprocess.Popen(cmd, cwd=ROOT, env=env, stdout=self.log, stderr=subprocess.STDOUT)
 
@@ -196,10 +201,10 @@ class AppProc:
 def launch(app_env, tmp_path):
     procs = []
 
-    def _launch(scene=None, *args):
+    def _launch(scene=None, *args, offer_autosave=False, env=None, subdir=None):
         # the user's scene folder (platformdirs' user data dir) is the test's own
-        env = dict(app_env, XDG_DATA_HOME=str(tmp_path / "data"))
-        p = AppProc(env, tmp_path, scene, args)
+        env = dict(app_env, XDG_DATA_HOME=str(tmp_path / "data"), **(env or {}))
+        p = AppProc(env, tmp_path / subdir if subdir else tmp_path, scene, args, offer_autosave)
         procs.append(p)
         return p
     yield _launch
