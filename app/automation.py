@@ -36,6 +36,10 @@ def _bodies(app):
     return out
 
 
+def _offer(offer):
+    return None if offer is None else {"path": str(offer[0]), "origin": offer[2]}
+
+
 def status(app) -> dict:
     """Everything a test checks, as JSON-ready values (bodies and springs only up to 300 bodies)."""
     w, ed, small = app.world, app.editor, len(app.rd_ids) <= 300
@@ -56,6 +60,7 @@ def status(app) -> dict:
         "overlays": dict(vars(app.overlays)), "quadtree_cells": len(app.sim.quadtree),
         "free_rect": list(app.free_rect()), "edit_error": ed.edit_error, "status_every": STATUS_EVERY,
         "save_as": app.files.save_as_path, "dialog": app.panels.dialogs.open_title,
+        "autosave_offer": _offer(app.panels.dialogs.autosave_offer),
         "user_scenes": [str(p) for p in scene_files(user_scenes_dir())],
         "ui_values": app.ui_values, "awake": int(np.count_nonzero(w.state()["awake"])) if app.warmup.ready else 0,
         "speed": app.sim.speed, "hint": app.editor.hint_text(), "scene_keys": app.input.scene_keys,
