@@ -77,11 +77,26 @@ def scene_camera(world):
     return center, zoom
 
 
+def view_box(center, zoom, rect):
+    """The world box (lo, hi) that ``rect`` (pixels) shows around ``center`` at ``zoom`` px/m."""
+    half = 0.5 * np.array([rect[2] - rect[0], rect[3] - rect[1]]) / zoom
+    c = np.asarray(center, dtype=np.float64)
+    return c - half, c + half
+
+
 def frame_scene(camera, world, regions, box=None) -> None:
-    """On opening a scene: its own camera if the file has one (its centre in the middle of the
-    largest free region), otherwise fit ``box`` (default: every body) into the free area."""
+    """On opening a scene: its own camera if the file has one and it shows the whole scene in the
+    largest free region (its centre in the middle); otherwise fit ``box`` (default: every body)
+    into the free area, so no scene opens with parts hidden under the panels."""
+    box = box if box is not None else content_box(world)
     cam = scene_camera(world)
+    rect = best_region(regions)
+    if cam is not None and box is not None:
+        lo, hi = view_box(cam[0], cam[1], rect)
+        slack = 0.02 * (hi - lo)
+        if not (np.all(box[0] >= lo - slack) and np.all(box[1] <= hi + slack)):
+            cam = None          # the block was made for another layout: it would hide part of the scene
     if cam is None:
-        fit(camera, box if box is not None else content_box(world), regions)
+        fit(camera, box, regions)
     else:
-        camera.look_at(cam[0], cam[1], rect=best_region(regions))
+        camera.look_at(cam[0], cam[1], rect=rect)
