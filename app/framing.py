@@ -54,6 +54,24 @@ def content_box(world):
     return box[:, :2].min(0), box[:, 2:].max(0)
 
 
+def focus_box(world):
+    """What a scene is about: its moving bodies' extent grown by a tenth of its size (at least 1.5 m) on
+    every side, kept within the whole scene; the whole scene when nothing moves.  A long static
+    ground or terrain should not shrink a card house to a few pixels."""
+    rd = world.render_data()
+    whole = content_box(world)
+    if whole is None:
+        return None
+    moving = rd.kind != 1
+    box = rd.aabb[moving]
+    box = box[np.all(np.isfinite(box), axis=1)]
+    if not len(box):
+        return whole
+    lo, hi = box[:, :2].min(0), box[:, 2:].max(0)
+    grow = np.maximum(0.1 * (hi - lo), 1.5)
+    return np.maximum(lo - grow, whole[0]), np.minimum(hi + grow, whole[1])
+
+
 def fit(camera, box, regions) -> None:
     """Frame ``box`` = (lo, hi) in the region of ``regions`` where it shows largest."""
     if box is None:
@@ -85,17 +103,19 @@ def view_box(center, zoom, rect):
 
 
 def frame_scene(camera, world, regions, box=None) -> None:
-    """On opening a scene: its own camera if the file has one and it shows the whole scene in the
-    largest free region (its centre in the middle); otherwise fit ``box`` (default: every body)
-    into the free area, so no scene opens with parts hidden under the panels."""
-    box = box if box is not None else content_box(world)
+    """On opening a scene: its own camera block if the file has one and it shows what the scene
+    is about (``focus_box``) in the largest free region; otherwise (a block made for another
+    layout) fit that box into the free area, so nothing the scene is about opens hidden under
+    the panels."""
+    box = box if box is not None else focus_box(world)
     cam = scene_camera(world)
     rect = best_region(regions)
     if cam is not None and box is not None:
         lo, hi = view_box(cam[0], cam[1], rect)
         slack = 0.02 * (hi - lo)
-        if not (np.all(box[0] >= lo - slack) and np.all(box[1] <= hi + slack)):
-            cam = None          # the block was made for another layout: it would hide part of the scene
+        shows = np.all(box[0] >= lo - slack) and np.all(box[1] <= hi + slack)
+        if not shows:
+            cam = None
     if cam is None:
         fit(camera, box, regions)
     else:

@@ -423,7 +423,7 @@ def default():
                  "A bit of everything: a pyramid, dominoes, a polygon tower, bouncing balls, a seesaw about "
                  "to be hit, a spring pendulum, a chain of boxes on springs and a shower of shapes.  Grab "
                  "anything with the mouse; switch solvers in the solver panel.",
-                 bodies, springs, camera={"center": [0.0, 6.0], "zoom": 10.5})
+                 bodies, springs, camera={"center": [0.0, 4.5], "zoom": 14.5})
 
 
 SCENES = {

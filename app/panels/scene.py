@@ -61,8 +61,8 @@ class SceneSection(Section):
     def scene_list(self, doc):
         """Shipped scenes (read-only: saving one writes to the user's folder) and the user's own."""
         user_dir = user_scenes_dir()
-        groups = (("shipped (read-only)", scene_files()), (f"yours: {user_dir}", scene_files(user_dir)))
-        rows = sum(len(f) for _, f in groups) + 2
+        groups = ((f"yours: {user_dir}", scene_files(user_dir)), ("shipped (read-only)", scene_files()))
+        rows = sum(len(f) for _, f in groups) + 3
         if imgui.begin_list_box("##scenes", imgui.ImVec2(-1, min(10, max(3, rows)) * 20 + 6)):
             for title, files in groups:
                 imgui.text_colored(DIM, title)

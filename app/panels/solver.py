@@ -62,12 +62,12 @@ class SolverSection(Section):
                     ed.switch_solver(m)
             imgui.end_combo()
         desc = " ".join(t for t in (mode_description(w.solver), reliability.summary(w.solver)) if t)
-        app.ui_values["solver:description"] = desc
+        app.ui_values["solver_description"] = desc
         if desc:
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(DIM, desc)
             imgui.pop_text_wrap_pos()
-            record(app, "solver:description")
+            record(app, "solver_description")
         self.settings(w)
         for label, attr, choices in WORLD_CHOICES:
             opts = list(choices)

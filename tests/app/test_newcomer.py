@@ -61,7 +61,7 @@ def test_mode_switch_wakes_and_reset_keeps_the_solver(launch):
     app = launch(ROOT / "scenes" / "pyramid.json")
     st = app.wait_ready(10)
     st = app.wait(lambda s: s["awake"] <= 5, 120, "the pyramid to fall asleep")   # of 210 boxes
-    desc = st["ui_values"]["solver:description"]
+    desc = st["ui_values"]["solver_description"]
     assert "Extreme probes (docs/reliability.md): held" in desc and "degraded" in desc, desc
     x0, y0, x1, y1 = st["ui_rects"]["solver_combo"]
     app.click((x0 + x1) / 2, (y0 + y1) / 2)
@@ -71,10 +71,10 @@ def test_mode_switch_wakes_and_reset_keeps_the_solver(launch):
     app.click((x0 + x1) / 2, (y0 + y1) / 2)
     st = app.wait(lambda s: s["solver"] == "impulse", 20, "the impulse mode")
     assert st["awake"] > 100, f"the switch left the pyramid asleep ({st['awake']} awake)"
-    desc = st["ui_values"]["solver:description"]
+    desc = st["ui_values"]["solver_description"]
     assert "failed" in desc and "speed" in desc, desc
     img = app.screenshot("impulse_description")
-    dx0, dy0, dx1, dy1 = map(int, st["ui_rects"]["solver:description"])
+    dx0, dy0, dx1, dy1 = map(int, st["ui_rects"]["solver_description"])
     assert int(np.count_nonzero(img[dy0:dy1, dx0:dx1].min(axis=2) > 140)) > 200, "the description is not drawn"
     app.xdo("mousemove", *scene_point(st))
     app.settle()
