@@ -102,21 +102,21 @@ def view_box(center, zoom, rect):
     return c - half, c + half
 
 
-def frame_scene(camera, world, regions, box=None) -> None:
+def frame_scene(camera, world, regions) -> None:
     """On opening a scene: its own camera block if the file has one and it shows what the scene
-    is about (``focus_box``) in the largest free region; otherwise (a block made for another
-    layout) fit that box into the free area, so nothing the scene is about opens hidden under
-    the panels."""
-    box = box if box is not None else focus_box(world)
+    is about (``focus_box``) in the largest free region; a block made for another layout that
+    would hide it gives way to fitting that box.  A scene without a block is fitted whole.  So
+    nothing a scene is about opens hidden under the panels."""
     cam = scene_camera(world)
+    if cam is None:
+        fit(camera, content_box(world), regions)
+        return
+    box = focus_box(world)
     rect = best_region(regions)
-    if cam is not None and box is not None:
+    if box is not None:
         lo, hi = view_box(cam[0], cam[1], rect)
         slack = 0.02 * (hi - lo)
-        shows = np.all(box[0] >= lo - slack) and np.all(box[1] <= hi + slack)
-        if not shows:
-            cam = None
-    if cam is None:
-        fit(camera, box, regions)
-    else:
-        camera.look_at(cam[0], cam[1], rect=rect)
+        if not (np.all(box[0] >= lo - slack) and np.all(box[1] <= hi + slack)):
+            fit(camera, box, regions)
+            return
+    camera.look_at(cam[0], cam[1], rect=rect)

@@ -63,8 +63,11 @@ def test_drag_moves_body_and_throws_it(launch, tmp_path):
     app.settle()                                # the joint pulls the box along for a few frames
     app.xdo("mouseup", 1)
     st = app.frames(40)
-    b2 = body(st, "box")
-    assert b2["position"][0] > b1["position"][0] + 1.0, (b1, b2)
+    b2 = next((b for b in st["bodies"] if b["name"] == "box"), None)
+    if b2 is None:       # thrown beyond the world bound (issue 16, item 4): removed with a notice
+        assert any("left the world bound" in m for m in st["messages"]), st["messages"]
+    else:
+        assert b2["position"][0] > b1["position"][0] + 1.0, (b1, b2)
     assert not st["gl_errors"] and not st["fault"]
 
 
