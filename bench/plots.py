@@ -22,7 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from .stage_timers import STAGES  # noqa: E402
+from .profile import result_stages  # noqa: E402
 
 MODE_COLORS = {"soft_step": "tab:blue", "sequential_impulse": "tab:orange", "impulse": "tab:green",
                "penalty": "tab:red", "hybrid": "tab:purple", "xpbd": "tab:brown"}
@@ -161,7 +161,7 @@ def profile_plot(res, path):
     prof = res.get("profile") or {}
     if not prof:
         return None
-    stages = [*STAGES, "python/other"]
+    stages = [*result_stages(next(iter(prof.values()))), "python/other"]
     fig, ax = plt.subplots(figsize=(8, 0.6 * len(prof) + 1.6))
     cmap = plt.get_cmap("tab10")
     for i, (scene, p) in enumerate(prof.items()):

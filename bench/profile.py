@@ -1,10 +1,12 @@
-"""Where a step's time goes: each pipeline stage timed while the world steps normally.
+"""Where a step's time goes: the core's own per-stage timings (``world.profile``), per scene.
 
     python -m bench.profile [--scene pyramid20|pyramid40|rain1000] [--solver soft_step] [--steps 300]
 
-The world steps normally (``world.step()``) with timers around the pipeline's stage entry
-points (bench/stage_timers.py).  "python/other" is the step's wall time not inside any stage
-(Python glue in ``World.step`` and ``Pipeline.step``, zeroing force arrays, bookkeeping).
+``world.profile`` holds the seconds of every pipeline stage of the last step (like Box2D's
+b2Profile) and their sum (``step``).  The world steps normally; each ``world.step()`` call is
+timed and its profile added up outside the timed call.  "python/other" is the wall time of
+``world.step()`` outside every stage (argument checks and glue in ``World.step``).  A core
+without ``world.profile`` is timed by wrapping its stage entry points (bench/stage_timers.py).
 """
 from __future__ import annotations
 
@@ -13,37 +15,63 @@ import time
 
 import numpy as np
 
-from .stage_timers import STAGES, timed_stages
+from . import stage_timers
+
+TOTAL = "step"  # world.profile's sum of its stages
+# the stages of results measured with timers wrapped around the pipeline's entry points (a core
+# without world.profile; older bench.json files)
+LEGACY_STAGES = stage_timers.STAGES
+
+
+def stage_names(world) -> list[str]:
+    """The stage names ``world.profile`` reports, in pipeline order (without their sum)."""
+    return [k for k in world.profile if k != TOTAL]
+
+
+def result_stages(prof) -> list[str]:
+    """The stage names of a ``stage_profile`` result (older results: LEGACY_STAGES)."""
+    return list(prof.get("stage_names") or LEGACY_STAGES)
+
+
+def _chunk(world, names, chunk):
+    """Seconds per stage and the wall time of ``chunk`` steps."""
+    acc = dict.fromkeys(names, 0.0)
+    total = 0.0
+    clock = time.perf_counter
+    for _ in range(chunk):
+        t = clock()
+        world.step()
+        total += clock() - t
+        prof = world.profile
+        for s in names:
+            acc[s] += prof[s]
+    acc["total"] = total
+    return acc
 
 
 def stage_profile(world, steps=200, warm=30, chunk=20) -> dict:
     """Microseconds per step in each stage of ``world.step()`` (after ``warm`` steps), from the
-    chunk of ``chunk`` steps with the smallest total: load from other processes on a shared
+    chunk of ``chunk`` steps with the smallest wall time: load from other processes on a shared
     machine only ever adds time, so the fastest chunk is the best estimate of the step itself.
 
-    Returns {"us_per_step": {stage: us, "total", "python/other", "median_total"}, "contacts",
-    "bodies", "pairs", "stages"}."""
+    Returns {"us_per_step": {stage: us, "total", "python/other", "median_total"}, "stage_names",
+    "contacts", "bodies", "pairs", "stages"}."""
+    if not hasattr(type(world), "profile"):  # a core that does not time its own stages
+        return stage_timers.stage_profile(world, steps, warm, chunk)
     for _ in range(warm):
         world.step()
-    per_chunk = []
-    for _ in range(max(1, steps // chunk)):
-        acc = {s: 0.0 for s in STAGES}
-        with timed_stages(world, acc):
-            t = time.perf_counter()
-            for _ in range(chunk):
-                world.step()
-            total = time.perf_counter() - t
-        acc["total"] = total
-        per_chunk.append({k: 1e6 * v / chunk for k, v in acc.items()})
-    # the least-disturbed chunk (smallest total) on a shared machine; the median total is kept beside it
+    names = stage_names(world)
+    per_chunk = [{k: 1e6 * v / chunk for k, v in _chunk(world, names, chunk).items()}
+                 for _ in range(max(1, steps // chunk))]
     best = min(per_chunk, key=lambda c: c["total"])
-    out = {k: float(best[k]) for k in (*STAGES, "total")}
-    out["python/other"] = max(out["total"] - sum(out[s] for s in STAGES), 0.0)
+    out = {k: float(best[k]) for k in (*names, "total")}
+    out["python/other"] = max(out["total"] - sum(out[s] for s in names), 0.0)
     out["median_total"] = float(np.median([c["total"] for c in per_chunk]))
     info = world.info()
-    # the broad phase's pair count has no public accessor yet (the core's profile will carry it)
-    return {"us_per_step": out, "contacts": int(info.get("contacts", 0)), "bodies": int(info.get("bodies", 0)),
-            "pairs": int(getattr(world._pipeline, "npairs", 0)), "stages": info.get("stages", [])}
+    # the broad phase's pair count has no public accessor: read from the pipeline when it has one
+    pairs = getattr(getattr(world, "_pipeline", None), "npairs", 0)
+    return {"us_per_step": out, "stage_names": names, "contacts": int(info.get("contacts", 0)),
+            "bodies": int(info.get("bodies", 0)), "pairs": int(pairs), "stages": info.get("stages", [])}
 
 
 def narrowphase_per_pair(prof) -> float:
@@ -58,7 +86,7 @@ def format_profile(name, prof) -> str:
     tot = us["total"]
     lines = [f"{name}: {tot / 1e3:.3f} ms/step (fastest chunk), {prof['bodies']} bodies, {prof['pairs']} broad-phase pairs, "
              f"{prof['contacts']} manifolds"]
-    for s in (*STAGES, "python/other"):
+    for s in (*result_stages(prof), "python/other"):
         lines.append(f"  {s:<14} {us[s]:9.1f} us  {100 * us[s] / tot:5.1f} %")
     lines.append(f"  narrow phase per pair: {narrowphase_per_pair(prof):.0f} ns")
     return "\n".join(lines)

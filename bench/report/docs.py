@@ -7,7 +7,7 @@ from .. import accuracy
 from ..configs import DEFAULT_MODE
 from ..engines import REF_ENGINES
 from ..paths import DOCS, DOCS_NOTES, RESULTS
-from ..profile import STAGES, narrowphase_per_pair
+from ..profile import narrowphase_per_pair, result_stages
 from ..scaling import loglog_slope
 from .summary import summary_lines
 from .tables import accuracy_table, fmt, md_table, speed_table
@@ -127,7 +127,8 @@ def _profile_md(res, rel):
     """The stage breakdown of the default mode per scene."""
     L = []
     if res.get("profile"):
-        st = [*STAGES, "python/other", "total"]
+        first = next(iter(res["profile"].values()))
+        st = [*result_stages(first), "python/other", "total"]
         rows = []
         for k, p in res["profile"].items():
             us = p["us_per_step"]
@@ -136,8 +137,9 @@ def _profile_md(res, rel):
                            for s in st], f"{narrowphase_per_pair(p):.0f}"])
         L += ["## Where the default mode's step goes", "",
               f"`{DEFAULT_MODE}` with default settings, sleeping off; microseconds per step in each pipeline stage "
-              "(timers wrapped around the stage entry points while `world.step()` runs; `python/other` is the "
-              "step's time outside every stage). Regenerate one scene with "
+              + ("(`world.profile`, the core's own timing of each stage of the step; "
+                 if "stage_names" in first else "(timers wrapped around the stage entry points while `world.step()` runs; ")
+              + "`python/other` is the step's time outside every stage). Regenerate one scene with "
               "`python -m bench.profile --scene pyramid20`.", "",
               md_table(["scene", "bodies", "pairs", "manifolds", *st, "narrow ns/pair"], rows), "",
               f"![profile]({rel}/profile.png)", ""]
