@@ -23,8 +23,10 @@ from pathlib import Path
 import numpy as np
 
 from physics import Circle, Polygon, World
-from physics import broadphase, narrowphase
-from physics.contacts import ContactBuffer
+from physics.collision import broadphase, narrowphase
+from physics.options import NARROWPHASES
+from physics.step.context import StepContext
+from physics.store import ContactBuffer
 from physics.store import BODY_FIELDS, STATIC, Bodies, allocate
 
 RESULTS = Path(__file__).resolve().parent / "results" / "collision.json"
@@ -150,13 +152,16 @@ def narrow_timings(npairs, min_time):
         w, pairs = narrow_world(kind, npairs)
         B, V, spec = w._bodies.view, w._verts.view, w.speculative_distance
         row = {"pair": kind, "pairs": npairs}
-        for method in ("sat", "gjk"):
+        for method in NARROWPHASES:
             contacts = ContactBuffer()
+            ctx = StepContext()
+            ctx.set("dt", 1 / 60)
+            ctx.set("spec", spec)
+            ctx.set("narrowphase", NARROWPHASES.index(method))
             t0 = time.perf_counter()
-            rows_made = narrowphase.collide(B, V, pairs, npairs, contacts, method, 1 / 60, spec)
+            rows_made = narrowphase.collide(ctx, B, V, pairs, npairs, contacts)
             compile_s[method] = max(compile_s.get(method, 0.0), time.perf_counter() - t0)
-            sec = time_call(lambda: narrowphase.collide(B, V, pairs, npairs, contacts, method,
-                                                        1 / 60, spec), min_time)
+            sec = time_call(lambda: narrowphase.collide(ctx, B, V, pairs, npairs, contacts), min_time)
             row[method] = npairs / sec
             row[method + "_manifolds"] = rows_made
         rows.append(row)

@@ -22,10 +22,7 @@ STAGES = ("checkpoint+geometry", "broadphase", "narrowphase", "solver", "sleep/i
 def timed_stages(world, acc):
     """While the block runs, every stage entry point the pipeline calls adds its wall time
     (seconds) to ``acc[stage]`` (``acc`` must hold every name of STAGES); undone on exit."""
-    try:  # the collision package of the restructured core, else the flat layout
-        from physics.collision import broadphase, narrowphase
-    except ImportError:
-        from physics import broadphase, narrowphase
+    from physics.collision import broadphase, narrowphase
     pipe = world._pipeline
     mode = world._mode
     clock = time.perf_counter
@@ -43,10 +40,7 @@ def timed_stages(world, acc):
         setattr(obj, attr, timed)
         undo.append((obj, attr, orig, attr in vars(obj)))
 
-    try:
-        from physics.step import pipeline as pipeline_module
-    except ImportError:
-        from physics import pipeline as pipeline_module
+    from physics.step import pipeline as pipeline_module
     # the step opens with one kernel (checkpoint + geometry) and closes with one (finite check +
     # force reset) where the pipeline has them; older pipelines call the pieces separately
     if hasattr(pipeline_module, "begin_step"):

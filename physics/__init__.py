@@ -9,7 +9,7 @@
 from . import _jit  # noqa: F401  (configures numba's cache before any kernel is defined)
 from .body import Body
 from .errors import SceneError, SimulationError
-from .shapes import Circle, Polygon
+from .geometry.shapes import Circle, Polygon
 from .spring import Spring
 from .world import World
 

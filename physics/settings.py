@@ -54,3 +54,69 @@ class Setting:
 
 def declare(*settings: Setting) -> dict[str, Setting]:
     return {s.name: s for s in settings}
+
+
+class ModeValues:
+    """The values of one mode's settings in one world, and a version bumped on every change
+    (so the step reloads the mode's parameter record only when a value changed)."""
+
+    __slots__ = ("decl", "values", "version")
+
+    def __init__(self, decl: dict[str, Setting]):
+        self.decl = decl
+        self.values = {k: s.default for k, s in decl.items()}
+        self.version = 0
+
+    def assign(self, key, value) -> None:
+        self.values[key] = self.decl[key].coerce(value)
+        self.version += 1
+
+
+class ModeSettings:
+    """Dict-like view of one solver mode's parameters, validated on assignment."""
+
+    def __init__(self, store: ModeValues, solver: str):
+        self._store = store
+        self._solver = solver
+        self._decl = store.decl
+        self._values = store.values
+
+    def _check(self, key):
+        if key not in self._decl:
+            raise KeyError(f"solver '{self._solver}' has no setting {key!r}; it has {list(self._decl)}")
+
+    def __getitem__(self, key):
+        self._check(key)
+        return self._values[key]
+
+    def __setitem__(self, key, value):
+        self._check(key)
+        self._store.assign(key, value)
+
+    def __iter__(self):
+        return iter(self._decl)
+
+    def __len__(self):
+        return len(self._decl)
+
+    def __contains__(self, key):
+        return key in self._decl
+
+    def items(self):
+        return [(k, self._values[k]) for k in self._decl]
+
+    def keys(self):
+        return list(self._decl)
+
+    def declared(self):
+        return dict(self._decl)
+
+    def update(self, other=(), **kw):
+        for k, v in dict(other, **kw).items():
+            self[k] = v
+
+    def to_dict(self) -> dict:
+        return dict(self.items())
+
+    def __repr__(self):
+        return f"ModeSettings({self._solver}, {self.to_dict()})"

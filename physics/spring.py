@@ -3,19 +3,29 @@ from __future__ import annotations
 
 import numpy as np
 
-from .body import finite_num, finite_vec
+from .validate import finite_num, finite_vec
 
 
 class Spring:
     """Handle of one spring (Hooke's law plus a damper along its axis, seed eqs. 18-20)."""
 
-    __slots__ = ("_world", "_id", "body_a", "body_b")
+    __slots__ = ("_world", "_id", "_a", "_b")
 
     def __init__(self, world, oid: int, body_a, body_b):
         self._world = world
         self._id = oid
-        self.body_a = body_a
-        self.body_b = body_b
+        self._a = body_a
+        self._b = body_b
+
+    @property
+    def body_a(self):
+        """The body the spring's anchor_a is on (read-only: a spring keeps its bodies)."""
+        return self._a
+
+    @property
+    def body_b(self):
+        """The body of anchor_b, or None when anchor_b is a fixed world point (read-only)."""
+        return self._b
 
     @property
     def _s(self) -> int:

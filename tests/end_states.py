@@ -5,7 +5,8 @@ A refactor that claims "no change in behaviour" must reproduce these bit for bit
 deliberately alters a trajectory (a bug fix), re-record in the same commit and say
 why in its message:
 
-    .venv/bin/python -m tests.end_states            # rewrites tests/data/end_states_600.json
+    .venv/bin/python -m tests.end_states                    # rewrites tests/data/end_states_600.json
+    .venv/bin/python -m tests.end_states --solver hybrid    # only the entries of one mode (or --scene)
 
 The digest is SHA-256 over the bodies' (x, q, v, w) in body order, as float64 bytes,
 so a single flipped bit anywhere shows.
@@ -48,13 +49,17 @@ def load_record() -> dict:
 
 
 def main(argv=None) -> int:
+    import argparse
+
     import physics
-    if str(ROOT) not in sys.path:
-        sys.path.insert(0, str(ROOT))
+    ap = argparse.ArgumentParser(description="record the 600-step end states")
+    ap.add_argument("--solver", action="append", help="only this mode (repeatable)")
+    ap.add_argument("--scene", action="append", help="only this scene (repeatable)")
+    args = ap.parse_args(argv)
     names = sorted(p.stem for p in SCENE_DIR.glob("*.json") if p.name != "stelkropp.schema.json")
-    out = {}
-    for name in names:
-        for solver in physics.solvers_available():
+    out = load_record() if (args.solver or args.scene) and RECORD.exists() else {}
+    for name in args.scene or names:
+        for solver in args.solver or physics.solvers_available():
             out[f"{name}/{solver}"] = digest(run(name, solver))
             print(f"{name:18s} {solver:18s} {out[f'{name}/{solver}'][:16]}", flush=True)
     RECORD.parent.mkdir(parents=True, exist_ok=True)

@@ -15,7 +15,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from physics import broadphase as bp
+from physics.collision import broadphase as bp
 from physics.store import BODY_FIELDS, DYNAMIC, KINEMATIC, STATIC, Bodies, allocate
 
 METHODS = [m for m in bp.METHODS]

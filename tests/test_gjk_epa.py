@@ -11,9 +11,9 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from physics.narrowphase import (GJK, SAT, circle_circle, epa, gjk_distance, polygon_circle,
+from physics.collision.narrowphase import (GJK, SAT, circle_circle, epa, gjk_distance, polygon_circle,
                                  polygon_collide, sat_query)
-from physics.shapes import Polygon
+from physics.geometry.shapes import Polygon
 
 SETTINGS = dict(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much,
                                                                HealthCheck.data_too_large])

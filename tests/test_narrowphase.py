@@ -10,10 +10,12 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from physics.contacts import ContactBuffer
-from physics.geometry import update_geometry
-from physics.narrowphase import collide
-from physics.shapes import Polygon
+from physics.options import NARROWPHASES
+from physics.step.context import StepContext
+from physics.store import ContactBuffer
+from physics.geometry.transform import update_geometry
+from physics.collision.narrowphase import collide
+from physics.geometry.shapes import Polygon
 from physics.store import BODY_FIELDS, CIRCLE, POLYGON, STATIC, Bodies, Table, VertexPool
 
 DT, SPEC = 1 / 60, 0.02
@@ -52,7 +54,11 @@ class State:
         B, V = self.bodies.view, self.verts.view
         update_geometry(B, V, self.bodies.n, DT, SPEC)
         pairs = np.array(pairs, dtype=np.int32).reshape(-1, 2)
-        n = collide(B, V, pairs, len(pairs), self.contacts, method, DT, SPEC)
+        ctx = StepContext()
+        ctx.set("dt", DT)
+        ctx.set("spec", SPEC)
+        ctx.set("narrowphase", NARROWPHASES.index(method))
+        n = collide(ctx, B, V, pairs, len(pairs), self.contacts)
         return self.contacts.cur, n
 
 

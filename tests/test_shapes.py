@@ -18,7 +18,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from physics.shapes import Circle, Polygon
+from physics.geometry.shapes import Circle, Polygon
 
 rel = dict(rel=1e-12, abs=1e-12)
 

@@ -16,7 +16,7 @@ from jsonschema import Draft202012Validator
 
 from .. import solvers
 from ..errors import SceneError
-from ..shapes import Circle, Polygon
+from ..geometry.shapes import Circle, Polygon
 from . import schema as fmt
 from .json_io import NonFinite
 

@@ -1,47 +1,32 @@
-"""Solver modes: one module per mode behind one small interface.
+"""Solver modes, one package per family, behind one small interface (solvers/base.py).
 
-A mode integrates forces, resolves contacts and springs, and integrates
-positions for one step.  Collision detection happens before it (shared by
-all modes), islands and the finite check after it.  Switching mode mid-run
-is switching which object's ``step`` the world calls; contact arrays,
-warm-start impulses and body state are shared.
+- ``soft_step``: sub-stepped soft contacts (Box2D v3 style), the default;
+- ``sequential_impulse``: projected Gauss-Seidel with warm starting (Box2D 2.x style);
+- ``classic``: the seed report's impulse, penalty and hybrid modes with their
+  explicit integrators and force generators.
+
+Each family is a small package on top of physics/constraints/.  Modes are
+imported on first use, so one broken mode never breaks the rest.
 """
 from __future__ import annotations
 
 import importlib
 
 from ..options import SOLVERS
-from ..settings import Setting
+from .base import SolverMode
 
-
-class SolverMode:
-    """Interface of a solver mode (subclass and register in ``_REGISTRY``)."""
-
-    name: str = ""
-    description: str = ""
-    settings: dict[str, Setting] = {}
-    #: the world's integrator setting applies to this mode
-    uses_integrator: bool = False
-
-    def step(self, world, dt: float, params: dict) -> None:
-        """Advance bodies by ``dt``: forces, contacts (world._contacts.cur), springs, positions."""
-        raise NotImplementedError
-
-    def stages(self, world) -> list[str]:
-        """Names of the stages this mode runs for this world (for ``info``)."""
-        return [self.name]
-
-
-# mode name -> "module:Class"; imported on first use so one broken mode never breaks the rest
+# mode name -> "module:Class"
 _REGISTRY = {
-    "soft_step": "physics.solvers.soft_step:SoftStep",
-    "sequential_impulse": "physics.solvers.sequential_impulse:SequentialImpulse",
-    "impulse": "physics.solvers.impulse:ImpulseMode",
-    "penalty": "physics.solvers.penalty:PenaltyMode",
-    "hybrid": "physics.solvers.hybrid:HybridMode",
+    "soft_step": "physics.solvers.soft_step.mode:SoftStep",
+    "sequential_impulse": "physics.solvers.sequential_impulse.mode:SequentialImpulse",
+    "impulse": "physics.solvers.classic.impulse:ImpulseMode",
+    "penalty": "physics.solvers.classic.penalty:PenaltyMode",
+    "hybrid": "physics.solvers.classic.hybrid:HybridMode",
 }
 assert tuple(_REGISTRY) == SOLVERS, "physics/options.py names the modes"
 _CACHE: dict[str, SolverMode] = {}
+
+__all__ = ["SolverMode", "available", "get"]
 
 
 def available() -> list[str]:
@@ -57,9 +42,10 @@ def available() -> list[str]:
 
 
 def get(name: str) -> SolverMode:
+    """The mode called ``name`` (ValueError for an unknown name, ImportError for a broken module)."""
+    if not isinstance(name, str) or name not in _REGISTRY:
+        raise ValueError(f"unknown solver {name!r}; choose one of {list(_REGISTRY)}")
     if name not in _CACHE:
-        if name not in _REGISTRY:
-            raise ValueError(f"unknown solver '{name}'; choose one of {list(_REGISTRY)}")
         mod, cls = _REGISTRY[name].split(":")
         _CACHE[name] = getattr(importlib.import_module(mod), cls)()
     return _CACHE[name]

@@ -1,0 +1,35 @@
+"""Narrow phase: contact manifolds for the broad phase's pairs.
+
+Modules: ``support`` (support mappings), ``simplex`` + ``gjk`` (distance,
+van den Bergen 1999), ``epa`` (penetration depth), ``sat`` (separating axes),
+``manifold`` (reference/incident clipping, feature ids), ``circles``,
+``pair`` (one polygon pair by either method), ``carry`` (per-point state
+carried from the previous step) and ``kernel`` (the whole pass).  The single-pair entries (``sat_query``, ``gjk_distance``,
+``epa``, ``polygon_collide``, ``circle_circle``, ``polygon_circle``) take
+plain vertex arrays in world coordinates for tests and tools.
+"""
+from __future__ import annotations
+
+from .circles import circle_circle, polygon_circle
+from .epa import epa
+from .gjk import gjk_distance
+from .kernel import collide_kernel
+from .pair import GJK, METHODS, SAT, polygon_collide
+from .sat import sat_query
+
+__all__ = ["collide", "sat_query", "gjk_distance", "epa", "polygon_collide",
+           "circle_circle", "polygon_circle", "SAT", "GJK", "METHODS"]
+
+
+def collide(ctx, B, V, pairs, npairs, contacts) -> int:
+    """Manifolds for ``pairs[:npairs]`` into ``contacts.cur``; returns the row count.
+
+    ``ctx`` is the step context (dt, speculative distance, narrow-phase code).
+    The previous step's rows become ``contacts.prev`` and carry their point
+    state (impulses for warm starting) over to the new ones.
+    """
+    contacts.swap()
+    contacts.ensure(int(npairs))
+    contacts.n = int(collide_kernel(ctx.array, B, V, pairs, int(npairs), contacts.cur, contacts.prev,
+                                    int(contacts.n_prev)))
+    return contacts.n

@@ -1,0 +1,41 @@
+"""Carry each contact point's state over from the previous step (what warm starting needs).
+
+Rows of both steps are sorted by key, so the previous row of a pair is found
+by a merge walk (one pointer that only moves forward).  The carried state
+(store/contacts.py CARRIED: accumulated impulses, penalty stick stretch and
+approach memory) is copied per point only where the feature id matches: a
+point made by other features is a different contact, and reusing its impulse
+would inject energy (Catto, "Iterative dynamics with temporal coherence",
+GDC 2005).
+"""
+from __future__ import annotations
+
+from ..._jit import kernel
+
+
+@kernel(inline="always")
+def seek(P, n_prev, ptr, key):
+    """Advance ``ptr`` to the first previous row with key >= ``key``."""
+    while ptr < n_prev and P.key[ptr] < key:
+        ptr += 1
+    return ptr
+
+
+@kernel(inline="always")
+def carry_over(C, row, P, n_prev, ptr):
+    """Fill row ``row``'s carried point state from previous row ``ptr`` (if same key), else zero."""
+    found = ptr < n_prev and P.key[ptr] == C.key[row]
+    for p in range(2):
+        C.jn[row, p] = 0.0
+        C.jt[row, p] = 0.0
+        C.stick[row, p] = 0.0
+        C.approach[row, p] = 0.0
+        if not found or p >= C.count[row]:
+            continue
+        for q in range(P.count[ptr]):
+            if P.feature[ptr, q] == C.feature[row, p]:
+                C.jn[row, p] = P.jn[ptr, q]
+                C.jt[row, p] = P.jt[ptr, q]
+                C.stick[row, p] = P.stick[ptr, q]
+                C.approach[row, p] = P.approach[ptr, q]
+                break

@@ -1,0 +1,352 @@
+"""Soft contact rows (Box2D v3 style), laid out for a sub-stepped inner loop.
+
+The verbs every constraint kind speaks, for contacts: ``prepare_contacts`` (once
+per step), ``warm_start_contacts``, ``solve_contacts`` (with bias; without bias it
+is the relax pass), ``restitution_contacts`` and ``store_impulses``.  The model:
+soft normal rows with bias (constraints/softness.py), relax, Coulomb friction,
+the 2x2 block solver of constraints/block.py, restitution.  The layout makes a
+sub-step pass cheap:
+
+* everything that is fixed for the step is computed once in ``prepare_rows``
+  into one scratch row per manifold (``R``, NF floats): for each point the
+  anchor projections r x n and r . n of both bodies (the tangent is
+  t = (-n_y, n_x), so r x t = r . n), the effective masses, the separation at
+  the start of the step, the friction coefficient in force, and for two-point
+  manifolds the block solver's K matrix and whether it is well conditioned;
+* a pass loads the two bodies' velocities into locals once per manifold, solves
+  both points' normal and friction rows on them and writes them back once;
+* the largest normal impulse of each point (restitution needs to know whether a
+  point pushed this step) is tracked inside the passes, not by an extra loop.
+
+With these projections the relative normal speed is
+  v_n = (v_b - v_a) . n + w_b (r_b x n) - w_a (r_a x n),
+an impulse j along n changes w_a by -I_a^-1 j (r_a x n), and the separation
+after the bodies moved by (dp, R(dq)) since the step began is
+  s = s0 + (dp_b - dp_a) . n + (c_b - 1)(r_b . n) + s_b (r_b x n) - (same for a).
+
+Arguments: ``c`` the step context record (physics/step/context.py: ``nc``),
+``p`` the mode's parameter record, which must have ``stick_speed``, ``inv_h``,
+``soft_dyn`` and ``soft_static`` (softness triples), ``push_out_speed``,
+``block_solver`` and ``restitution_threshold``; ``SB`` the body rows
+(constraints/body_rows.py), ``C`` the contact table, ``R`` the rows' scratch.
+"""
+from __future__ import annotations
+
+from .._jit import kernel
+from .block import block_mass, solve_block
+from .body_rows import DCOS, DPX, DPY, DSIN, II, IM, VX, VY, W
+
+# per point p the fields start at p * PT
+RNA, RNB, RTA, RTB, MASS_N, MASS_T, SEP0, MU, VN0, MAXJ, JN, JT = range(12)
+PT = 12
+K11 = 2 * PT      # block solver: K = [[k11, k12], [k12, k22]] and 1 / det K
+K22 = K11 + 1
+K12 = K11 + 2
+INV_DET = K11 + 3
+BLOCK = K11 + 4   # 1.0 when K is well conditioned (the block solver may run)
+RIGID = K11 + 5   # 1.0 when one of the bodies does not move (static/kinematic): stiffer rows
+NX = K11 + 6      # the normal
+NY = K11 + 7
+NF = K11 + 8
+
+
+@kernel
+def prepare_contacts(c, p, B, C, R):
+    """Fill R[:nc] from the manifolds and the bodies' state at the start of the step."""
+    stick_speed = p.stick_speed
+    for k in range(c.nc):
+        a = C.a[k]
+        b = C.b[k]
+        nx = C.normal[k, 0]
+        ny = C.normal[k, 1]
+        ima = B.inv_m[a]
+        imb = B.inv_m[b]
+        iia = B.inv_i[a]
+        iib = B.inv_i[b]
+        xax = B.x[a, 0]
+        xay = B.x[a, 1]
+        xbx = B.x[b, 0]
+        xby = B.x[b, 1]
+        vax = B.v[a, 0]
+        vay = B.v[a, 1]
+        wa = B.w[a]
+        vbx = B.v[b, 0]
+        vby = B.v[b, 1]
+        wb = B.w[b]
+        dvnx = (vbx - vax) * nx + (vby - vay) * ny
+        dvtx = -(vbx - vax) * ny + (vby - vay) * nx
+        cnt = C.count[k]
+        for q in range(cnt):
+            o = q * PT
+            rax = C.point[k, q, 0] - xax
+            ray = C.point[k, q, 1] - xay
+            rbx = C.point[k, q, 0] - xbx
+            rby = C.point[k, q, 1] - xby
+            rna = rax * ny - ray * nx
+            rnb = rbx * ny - rby * nx
+            rta = rax * nx + ray * ny
+            rtb = rbx * nx + rby * ny
+            R[k, o + RNA] = rna
+            R[k, o + RNB] = rnb
+            R[k, o + RTA] = rta
+            R[k, o + RTB] = rtb
+            kn = ima + imb + iia * rna * rna + iib * rnb * rnb
+            R[k, o + MASS_N] = 1.0 / kn if kn > 0.0 else 0.0
+            kt = ima + imb + iia * rta * rta + iib * rtb * rtb
+            R[k, o + MASS_T] = 1.0 / kt if kt > 0.0 else 0.0
+            R[k, o + SEP0] = -C.depth[k, q]
+            R[k, o + VN0] = dvnx + wb * rnb - wa * rna
+            vt = dvtx + wb * rtb - wa * rta
+            # Coulomb (seed eq. 23): static coefficient while sticking, dynamic once sliding
+            R[k, o + MU] = C.mu_s[k] if abs(vt) <= stick_speed else C.mu_d[k]
+            R[k, o + MAXJ] = 0.0
+            R[k, o + JN] = C.jn[k, q]
+            R[k, o + JT] = C.jt[k, q]
+        R[k, NX] = nx
+        R[k, NY] = ny
+        R[k, RIGID] = 1.0 if (ima == 0.0 or imb == 0.0) else 0.0
+        R[k, BLOCK] = 0.0
+        if cnt == 2:
+            ra0 = R[k, RNA]
+            rb0 = R[k, RNB]
+            ra1 = R[k, PT + RNA]
+            rb1 = R[k, PT + RNB]
+            im = ima + imb
+            k11 = im + iia * ra0 * ra0 + iib * rb0 * rb0
+            k22 = im + iia * ra1 * ra1 + iib * rb1 * rb1
+            k12 = im + iia * ra0 * ra1 + iib * rb0 * rb1
+            R[k, K11] = k11
+            R[k, K22] = k22
+            R[k, K12] = k12
+            ok, inv_det = block_mass(k11, k12, k22)
+            if ok:
+                R[k, BLOCK] = 1.0
+                R[k, INV_DET] = inv_det
+
+
+@kernel
+def warm_start_contacts(c, SB, C, R):
+    """Apply the accumulated impulses (normal and friction) of every point."""
+    for k in range(c.nc):
+        a = C.a[k]
+        b = C.b[k]
+        nx = R[k, NX]
+        ny = R[k, NY]
+        px = 0.0
+        py = 0.0
+        aa = 0.0
+        ab = 0.0
+        for q in range(C.count[k]):
+            o = q * PT
+            jn = R[k, o + JN]
+            jt = R[k, o + JT]
+            px += jn * nx - jt * ny
+            py += jn * ny + jt * nx
+            aa += jn * R[k, o + RNA] + jt * R[k, o + RTA]
+            ab += jn * R[k, o + RNB] + jt * R[k, o + RTB]
+        ima = SB[a, IM]
+        imb = SB[b, IM]
+        SB[a, VX] -= ima * px
+        SB[a, VY] -= ima * py
+        SB[a, W] -= SB[a, II] * aa
+        SB[b, VX] += imb * px
+        SB[b, VY] += imb * py
+        SB[b, W] += SB[b, II] * ab
+
+
+@kernel
+def solve_contacts(c, p, SB, C, R, use_bias, track):
+    """One Gauss-Seidel pass over the manifolds: soft normal rows (>= 0), then friction.
+
+    ``use_bias``: the biased pass (overlap pushed out softly); without it the
+    relax pass.  Speculative points (still apart) are rigid rows that let the
+    bodies close the gap and no further.  With ``p.block_solver`` a two-point
+    manifold whose rows are in the same regime is solved as a 2x2 LCP
+    (constraints/block.py).  ``track``: record each point's largest normal
+    impulse (restitution).
+    """
+    inv_h = p.inv_h
+    push_speed = p.push_out_speed
+    block = p.block_solver
+    for k in range(c.nc):
+        a = C.a[k]
+        b = C.b[k]
+        nx = R[k, NX]
+        ny = R[k, NY]
+        ima = SB[a, IM]
+        imb = SB[b, IM]
+        iia = SB[a, II]
+        iib = SB[b, II]
+        vax = SB[a, VX]
+        vay = SB[a, VY]
+        wa = SB[a, W]
+        vbx = SB[b, VX]
+        vby = SB[b, VY]
+        wb = SB[b, W]
+        # the linear response of each body to a unit impulse along n
+        anx = ima * nx
+        any_ = ima * ny
+        bnx = imb * nx
+        bny = imb * ny
+        soft = p.soft_static if R[k, RIGID] != 0.0 else p.soft_dyn
+        rate = soft[0]
+        mscale = soft[1]
+        iscale = soft[2]
+        # displacement of b relative to a since the step began, along n
+        ddn = (SB[b, DPX] - SB[a, DPX]) * nx + (SB[b, DPY] - SB[a, DPY]) * ny
+        cam = SB[a, DCOS] - 1.0
+        cbm = SB[b, DCOS] - 1.0
+        sa = SB[a, DSIN]
+        sb = SB[b, DSIN]
+        cnt = C.count[k]
+        # bias, mass scale and impulse scale of both normal rows in this pass
+        bias0 = 0.0
+        ms0 = 1.0
+        is0 = 0.0
+        bias1 = 0.0
+        ms1 = 1.0
+        is1 = 0.0
+        for q in range(cnt):
+            o = q * PT
+            sep = (R[k, o + SEP0] + ddn + cbm * R[k, o + RTB] + sb * R[k, o + RNB]
+                   - cam * R[k, o + RTA] - sa * R[k, o + RNA])
+            bias = 0.0
+            ms = 1.0
+            isc = 0.0
+            if sep > 0.0:
+                bias = sep * inv_h  # speculative: may approach until touching, no further
+            elif use_bias:
+                bias = max(rate * sep, -push_speed)
+                ms = mscale
+                isc = iscale
+            if q == 0:
+                bias0, ms0, is0 = bias, ms, isc
+            else:
+                bias1, ms1, is1 = bias, ms, isc
+        done = False
+        if block and cnt == 2 and R[k, BLOCK] != 0.0 and ms0 == ms1:
+            rna0 = R[k, RNA]
+            rnb0 = R[k, RNB]
+            rna1 = R[k, PT + RNA]
+            rnb1 = R[k, PT + RNB]
+            k11 = R[k, K11]
+            k22 = R[k, K22]
+            k12 = R[k, K12]
+            old0 = R[k, JN]
+            old1 = R[k, PT + JN]
+            dvn = (vbx - vax) * nx + (vby - vay) * ny
+            v0 = dvn + wb * rnb0 - wa * rna0
+            v1 = dvn + wb * rnb1 - wa * rna1
+            # free speeds (this manifold's impulses removed) plus bias
+            g0 = v0 - (k11 * old0 + k12 * old1) + bias0
+            g1 = v1 - (k12 * old0 + k22 * old1) + bias1
+            done, x0, x1 = solve_block(k11, k12, k22, R[k, INV_DET], R[k, MASS_N], R[k, PT + MASS_N],
+                                       g0, g1, ms0)
+            if done:
+                R[k, JN] = x0
+                R[k, PT + JN] = x1
+                d0 = x0 - old0
+                d1 = x1 - old1
+                d = d0 + d1
+                vax -= d * anx
+                vay -= d * any_
+                wa -= iia * (d0 * rna0 + d1 * rna1)
+                vbx += d * bnx
+                vby += d * bny
+                wb += iib * (d0 * rnb0 + d1 * rnb1)
+        if not done:
+            for q in range(cnt):
+                o = q * PT
+                rna = R[k, o + RNA]
+                rnb = R[k, o + RNB]
+                if q == 0:
+                    bias, ms, isc = bias0, ms0, is0
+                else:
+                    bias, ms, isc = bias1, ms1, is1
+                vn = (vbx - vax) * nx + (vby - vay) * ny + wb * rnb - wa * rna
+                old = R[k, o + JN]
+                j = -R[k, o + MASS_N] * ms * (vn + bias) - isc * old
+                new = max(old + j, 0.0)
+                R[k, o + JN] = new
+                j = new - old
+                vax -= j * anx
+                vay -= j * any_
+                wa -= iia * j * rna
+                vbx += j * bnx
+                vby += j * bny
+                wb += iib * j * rnb
+        for q in range(cnt):
+            o = q * PT
+            rta = R[k, o + RTA]
+            rtb = R[k, o + RTB]
+            jn = R[k, o + JN]
+            if track and jn > R[k, o + MAXJ]:
+                R[k, o + MAXJ] = jn
+            vt = -(vbx - vax) * ny + (vby - vay) * nx + wb * rtb - wa * rta
+            limit = R[k, o + MU] * jn
+            old = R[k, o + JT]
+            new = min(max(old - R[k, o + MASS_T] * vt, -limit), limit)
+            R[k, o + JT] = new
+            j = new - old
+            # impulse j along t = (-n_y, n_x)
+            vax += j * any_
+            vay -= j * anx
+            wa -= iia * j * rta
+            vbx -= j * bny
+            vby += j * bnx
+            wb += iib * j * rtb
+        SB[a, VX] = vax
+        SB[a, VY] = vay
+        SB[a, W] = wa
+        SB[b, VX] = vbx
+        SB[b, VY] = vby
+        SB[b, W] = wb
+
+
+@kernel
+def restitution_contacts(c, p, SB, C, R):
+    """Newton's law v_n' = -e v_n (seed eq. 13) for points that hit faster than
+    ``p.restitution_threshold`` and pushed this step (a speculative point never
+    reached does not bounce)."""
+    threshold = p.restitution_threshold
+    for k in range(c.nc):
+        e = C.e[k]
+        if e != 0.0:
+            _restitution(SB, C, k, R, threshold, e)
+
+
+@kernel
+def store_impulses(c, C, R):
+    """The accumulated impulses back into the contact table (next step's warm start)."""
+    for k in range(c.nc):
+        for q in range(C.count[k]):
+            C.jn[k, q] = R[k, q * PT + JN]
+            C.jt[k, q] = R[k, q * PT + JT]
+
+
+@kernel
+def _restitution(SB, C, k, R, threshold, e):
+    a = C.a[k]
+    b = C.b[k]
+    nx = R[k, NX]
+    ny = R[k, NY]
+    ima = SB[a, IM]
+    imb = SB[b, IM]
+    for q in range(C.count[k]):
+        o = q * PT
+        vn0 = R[k, o + VN0]
+        if vn0 > -threshold or R[k, o + MAXJ] == 0.0:
+            continue
+        rna = R[k, o + RNA]
+        rnb = R[k, o + RNB]
+        vn = (SB[b, VX] - SB[a, VX]) * nx + (SB[b, VY] - SB[a, VY]) * ny + SB[b, W] * rnb - SB[a, W] * rna
+        old = R[k, o + JN]
+        new = max(old - R[k, o + MASS_N] * (vn + e * vn0), 0.0)
+        R[k, o + JN] = new
+        j = new - old
+        SB[a, VX] -= ima * j * nx
+        SB[a, VY] -= ima * j * ny
+        SB[a, W] -= SB[a, II] * j * rna
+        SB[b, VX] += imb * j * nx
+        SB[b, VY] += imb * j * ny
+        SB[b, W] += SB[b, II] * j * rnb

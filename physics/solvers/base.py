@@ -1,0 +1,35 @@
+"""The interface every solver mode implements."""
+from __future__ import annotations
+
+from ..settings import Setting
+
+
+class SolverMode:
+    """A solver mode: integrates forces, resolves contacts and springs, moves the bodies.
+
+    Collision detection runs before it (shared by all modes), islands and the
+    finite check after it.  The pipeline hands ``step`` the step context
+    (physics/step/context.py), the mode's parameter record (its ``settings``
+    plus the ``derived`` fields ``derive`` fills) and the world's store
+    (physics/store: bodies, verts, springs, contacts).  Switching mode mid-run is
+    switching which mode's ``step`` runs; body and contact tables are shared.
+    """
+
+    name: str = ""
+    description: str = ""
+    settings: dict[str, Setting] = {}
+    #: extra fields of the parameter record: (name, dtype) or (name, dtype, shape)
+    derived: tuple = ()
+    #: the world's integrator setting applies to this mode
+    uses_integrator: bool = False
+
+    def derive(self, ctx, par, store) -> None:
+        """Fill the derived fields of ``par`` for this step (called before ``step``)."""
+
+    def step(self, ctx, par, store) -> None:
+        """Advance bodies by ctx.dt: forces, contacts (store.contacts.cur), springs, positions."""
+        raise NotImplementedError
+
+    def stages(self, store, values: dict, integrator: str) -> list[str]:
+        """Names of the stages this mode runs (for ``World.info``); ``values``: its settings."""
+        return [self.name]

@@ -1,0 +1,92 @@
+"""``impulse``: the seed's impulse-based response (6.1) with projection (3.2-3.3).
+
+Forces are integrated first, then every point that penetrates gets the
+eq. 15/16 impulse with restitution and Coulomb friction (eqs. 24-27), then
+the remaining penetration is pushed out (linear or non-linear projection).
+Resting contact: the impulses act like a constant contact force over the
+step (position share), so a resting box is in exact equilibrium and does
+not jitter.  Good for impacts and small stacks; tall stacks need many
+iterations (no warm start, as in the seed).
+
+``impulse_step`` also serves ``hybrid`` (hybrid.py), which first classifies
+each point as an impact (these impulses) or resting contact (a penalty spring
+inside the force integration).
+"""
+from __future__ import annotations
+
+from ..._jit import kernel
+from ...constraints.point import prepare_points
+from ...settings import Setting, declare
+from .common import COMMON, IMPULSE_SETTINGS, NO_PENALTY, PROJECTIONS, SeedMode, auto_speed, share_factor
+from .contact_geometry import classify
+from .impulses import activate_impulses, position_share, save_velocities, solve_impulses
+from .integrators import advance, save_start
+from .projection import project
+
+ACTIVE_DEPTH = 1e-9  # a point takes part once it penetrates (seed: collision = overlap)
+
+
+@kernel
+def impulse_step(ctx, par, B, C, S, P, R, hybrid):
+    """Move (forces, integrator), then resolve: impulses, position share, projection.
+
+    With ``hybrid`` only the points ``classify`` found approaching faster than
+    ``p.thr`` get impulses; the others are penalty springs during ``advance``."""
+    c = ctx[0]
+    p = par[0]
+    n = c.n
+    nc = c.nc
+    save_start(B, n, R)
+    prepare_points(B, C, nc, p.stick_speed, P)
+    if hybrid:
+        classify(B, C, nc, P, p.thr)
+    advance(c, p, B, S, C, P, R)
+    save_velocities(B, n, R)
+    activate_impulses(B, C, nc, P, R, ACTIVE_DEPTH, hybrid, p.thr, c.gx, c.gy, p.energy_correction,
+                      p.stick_speed)
+    solve_impulses(B, C, nc, P, p.iterations)
+    position_share(B, n, R, p.share)
+    if p.proj > 0:
+        project(B, C, nc, P, R, p.allowed_penetration, p.proj == 2, p.min_linear_share,
+                p.projection_iterations)
+
+
+class ImpulseMode(SeedMode):
+    name = "impulse"
+    description = ("The seed's impulse response: eq. 15 impulses with restitution and Coulomb friction "
+                   "after the force integration, then linear or non-linear projection.")
+    settings = declare(
+        *IMPULSE_SETTINGS,
+        Setting("restitution_threshold", -1.0, -1.0, 100.0,
+                "impacts slower than this (m/s) do not bounce; -1: 3 |g| dt (a resting box gains "
+                "|g| dt per step and must not hop)"),
+        *COMMON,
+    )
+    threshold_setting = "restitution_threshold"
+
+    def derive(self, ctx, par, store):
+        self.derive_impulses(ctx, par, NO_PENALTY, self.substeps(store, ctx, par))
+
+    def derive_impulses(self, ctx, par, pen, substeps):
+        """The derived fields of the impulse kernel for ``substeps`` and penalty parameters ``pen``."""
+        v = par.values
+        dt = float(ctx.get("dt"))
+        integrator = self.integrator_name(ctx)
+        par.set("substeps", substeps)
+        par.set("thr", auto_speed(v[self.threshold_setting], float(ctx.get("gx")), float(ctx.get("gy")), dt))
+        par.set("share", dt * share_factor(integrator, substeps))
+        par.set("proj", PROJECTIONS.index(v["projection"]))
+        par.set("pen", pen)
+
+    def step(self, ctx, par, store):
+        R, P = self.work(store.bodies.n, store.contacts.n)
+        impulse_step(ctx.array, par.array, store.bodies.view, store.contacts.cur, store.springs.view, P, R,
+                     self.hybrid)
+
+    hybrid = False
+
+    def stages(self, store, values, integrator):
+        out = self.force_stages(store, integrator) + ["contacts:impulse"]
+        if values["projection"] != "none":
+            out.append(f"projection:{values['projection']}")
+        return out

@@ -1,0 +1,48 @@
+"""``penalty``: contacts as damped springs along the penetration (seed 6.2, eq. 17).
+
+No projection and no impulses: every contact point carries a spring-damper
+force (solvers/classic/penalty_force.py) that the world's integrator
+integrates together with gravity and the springs, sub-stepped so that
+omega h stays inside the integrator's stability range (a 25 Hz contact is
+about 6 symplectic sub-steps at 60 Hz).  Good for resting contact and
+stacks (smooth, no jitter); soft for fast impacts (a little overlap, bounce
+set by the damping ratio that matches the restitution).
+"""
+from __future__ import annotations
+
+from ..._jit import kernel
+from ...constraints.point import prepare_points
+from ...settings import declare
+from .common import COMMON, PENALTY_SETTINGS, SeedMode, contact_rate, penalty_params
+from .contact_geometry import PENALTY, flag_all
+from .integrators import advance, save_start
+
+
+@kernel
+def penalty_step(ctx, par, B, C, S, P, R):
+    c = ctx[0]
+    p = par[0]
+    save_start(B, c.n, R)
+    prepare_points(B, C, c.nc, p.stick_speed, P)
+    flag_all(C, c.nc, P, PENALTY)
+    advance(c, p, B, S, C, P, R)
+
+
+class PenaltyMode(SeedMode):
+    name = "penalty"
+    description = ("The seed's penalty contacts: damped springs along the penetration vector with a "
+                   "regularised Coulomb friction force, sub-stepped automatically; no projection.")
+    settings = declare(*PENALTY_SETTINGS, *COMMON)
+
+    def derive(self, ctx, par, store):
+        pen = penalty_params(par.values)
+        par.set("pen", pen)
+        par.set("substeps", self.substeps(store, ctx, par, contact_rate(pen) if store.contacts.n else 0.0))
+
+    def step(self, ctx, par, store):
+        R, P = self.work(store.bodies.n, store.contacts.n)
+        penalty_step(ctx.array, par.array, store.bodies.view, store.contacts.cur, store.springs.view, P, R)
+
+    def stages(self, store, values, integrator):
+        return self.force_stages(store, integrator)[:-1] + ["forces:penalty_contacts",
+                                                           f"integrate:{integrator} (sub-stepped)"]

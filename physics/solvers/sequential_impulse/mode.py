@@ -1,0 +1,71 @@
+"""``sequential_impulse``'s settings and its place in the pipeline (the kernel is in kernel.py)."""
+from __future__ import annotations
+
+from collections import namedtuple
+
+import numpy as np
+
+from ...constraints.point import point_rows
+from ...settings import Setting, declare
+from ..base import SolverMode
+from .kernel import BAUMGARTE, SPLIT, si_step
+
+CORRECTIONS = ("baumgarte", "split_impulse")
+assert CORRECTIONS.index("baumgarte") == BAUMGARTE and CORRECTIONS.index("split_impulse") == SPLIT
+
+# displacements since the step began (DP, DQ and its cos/sin DC, DS) and the pseudo-velocities
+# of the split impulses (VP, WP)
+Motion = namedtuple("Motion", "DP DQ DC DS VP WP")
+
+
+class SequentialImpulse(SolverMode):
+    name = "sequential_impulse"
+    description = "Rigid contacts by projected Gauss-Seidel on accumulated impulses with warm starting " \
+                  "(Box2D 2.x / Chipmunk style)."
+    settings = declare(
+        Setting("velocity_iterations", 8, 1, 256, "Gauss-Seidel sweeps over the contact velocity rows per step"),
+        Setting("position_iterations", 3, 0, 256, "sweeps over the position rows (split impulses) per step"),
+        Setting("warm_starting", True, doc="start from last step's impulses (matched by contact features)"),
+        Setting("baumgarte", 0.2, 0.0, 1.0, "fraction of the overlap beyond the slop removed per step"),
+        Setting("linear_slop", 0.005, 0.0, 1.0, "overlap (m) left uncorrected so resting contacts persist"),
+        Setting("position_correction", "split_impulse",
+                doc="split_impulse: pseudo-velocities that move positions but leave no momentum; "
+                    "baumgarte: a velocity bias (cheaper, springier)",
+                choices=CORRECTIONS),
+        Setting("restitution_threshold", 1.0, 0.0, 100.0, "impacts slower than this (m/s) do not bounce"),
+        Setting("stick_speed", 0.01, 0.0, 10.0, "tangential speed (m/s) below which static friction applies"),
+        Setting("block_solver", False, doc="solve the two normal points of a face contact together (Box2D 2.x block solver; off: it converges faster per face but stacks drift more here)"),
+    )
+    derived = (("inv_dt", np.float64),)
+
+    def __init__(self):
+        self._alloc_bodies(64)
+        self._alloc_rows(256)
+
+    def _alloc_bodies(self, cap):
+        self.M = Motion(np.zeros((cap, 2)), np.zeros(cap), np.ones(cap), np.zeros(cap),
+                        np.zeros((cap, 2)), np.zeros(cap))
+
+    def _alloc_rows(self, cap):
+        # per point: the velocity bias and the split impulses' accumulated pseudo impulse
+        self.W = point_rows("SIPoints", cap, extra=(("bias", np.float64), ("jp", np.float64)))
+
+    def derive(self, ctx, par, store):
+        par.set("inv_dt", 1.0 / ctx.get("dt"))
+
+    def step(self, ctx, par, store):
+        n = store.bodies.n
+        if n > len(self.M.DQ):
+            self._alloc_bodies(2 * n)
+        c = store.contacts
+        if c.n > len(self.W.bias):
+            self._alloc_rows(2 * c.n)
+        c.adopt(ctx.get("dt"), int(ctx.get("step")))
+        si_step(ctx.array, par.array, store.bodies.view, c.cur, store.springs.view, self.W, self.M)
+
+    def stages(self, store, values, integrator):
+        out = ["integrate:symplectic_euler", "contacts:sequential_impulse",
+               f"position_correction:{values['position_correction']}"]
+        if store.springs.n:
+            out.append("springs")
+        return out

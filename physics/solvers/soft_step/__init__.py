@@ -1,0 +1,1 @@
+"""``soft_step``: sub-stepped soft contacts (Box2D v3 style), the default mode."""

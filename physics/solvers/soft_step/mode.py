@@ -1,0 +1,74 @@
+"""``soft_step``'s settings and its place in the pipeline (the kernel is in kernel.py)."""
+from __future__ import annotations
+
+import numpy as np
+
+from ...constraints.body_rows import NB
+from ...constraints.contact_soft import NF
+from ...constraints.softness import softness
+from ...settings import Setting, declare
+from ..base import SolverMode
+from .kernel import soft_step
+
+
+class SoftStep(SolverMode):
+    name = "soft_step"
+    description = "Sub-stepped soft contacts with relax and restitution passes (Box2D v3 style); the default."
+    settings = declare(
+        Setting("substeps", 4, 1, 64, "sub-steps per step: more is stiffer and more accurate, and costs more"),
+        Setting("iterations", 1, 1, 32, "biased contact passes per sub-step"),
+        Setting("contact_hertz", 60.0, 1.0, 1000.0, "contact stiffness as a frequency (capped at a quarter of the sub-step rate)"),
+        Setting("damping_ratio", 10.0, 0.0, 100.0, "contact damping ratio (above 1 is overdamped: no bounce from overlap)"),
+        Setting("push_out_speed", 3.0, 0.0, 100.0, "largest speed (m/s) at which overlap is pushed apart"),
+        Setting("warm_starting", True, doc="start from last step's impulses (matched by contact features)"),
+        Setting("relax", True, doc="a pass without bias after each sub-step removes push-out velocity"),
+        Setting("restitution_threshold", 1.0, 0.0, 100.0, "impacts slower than this (m/s) do not bounce"),
+        Setting("stick_speed", 0.01, 0.0, 10.0, "tangential speed (m/s) below which static friction applies"),
+        Setting("block_solver", True, doc="solve the two normal points of a face contact together (no rocking)"),
+    )
+    # sub-step length and its inverse; (bias rate, mass scale, impulse scale) of contacts between
+    # two moving bodies and of contacts against a body that does not move
+    derived = (("h", np.float64), ("inv_h", np.float64), ("soft_dyn", np.float64, (3,)),
+               ("soft_static", np.float64, (3,)))
+
+    def __init__(self):
+        self._alloc(64)
+        self.R = np.zeros((64, NF))
+
+    def _alloc(self, cap):
+        self.SB = np.zeros((cap, NB))
+
+    def derive(self, ctx, par, store):
+        dt = ctx.get("dt")
+        key = (dt, par.version)
+        if getattr(par, "_derived_for", None) == key:
+            return
+        h = dt / par.get("substeps")
+        inv_h = 1.0 / h
+        hertz = par.get("contact_hertz")
+        zeta = par.get("damping_ratio")
+        # contacts against static bodies are twice as stiff (they carry the whole load); both are
+        # capped at a quarter of the sub-step rate: stiffer static rows (Box2D v3 allows 2x the cap)
+        # leave a 5-box stack rocking forever at 60 Hz instead of going to sleep
+        cap = 0.25 * inv_h
+        par.set("h", h)
+        par.set("inv_h", inv_h)
+        par.set("soft_dyn", softness(min(hertz, cap), zeta, h))
+        par.set("soft_static", softness(min(2.0 * hertz, cap), zeta, h))
+        par._derived_for = key
+
+    def step(self, ctx, par, store):
+        n = store.bodies.n
+        if n > len(self.SB):
+            self._alloc(2 * n)
+        c = store.contacts
+        if c.n > len(self.R):
+            self.R = np.zeros((max(c.n, 2 * len(self.R)), NF))
+        c.adopt(par.get("h"), int(ctx.get("step")))  # impulses per sub-step; rescaled after a switch
+        soft_step(ctx.array, par.array, store.bodies.view, c.cur, store.springs.view, self.R, self.SB)
+
+    def stages(self, store, values, integrator):
+        out = ["integrate:symplectic_euler (sub-stepped)", "contacts:soft"]
+        if store.springs.n:
+            out.append("springs:soft")
+        return out

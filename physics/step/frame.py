@@ -1,0 +1,31 @@
+"""The two kernels that open and close every step.
+
+Fused so that the fixed per-step cost of calling into compiled code stays
+small: each kernel call from Python unboxes the whole body table.
+"""
+from __future__ import annotations
+
+from .._jit import kernel
+from ..geometry.transform import update_geometry
+from .checkpoint import count_nonfinite, save_state
+
+
+@kernel
+def begin_step(ctx, B, V, X, Q, Vel, W):
+    """Save the last finite state, then refresh world geometry and AABBs."""
+    c = ctx[0]
+    save_state(B, c.n, X, Q, Vel, W)
+    update_geometry(B, V, c.n, c.dt, c.spec)
+
+
+@kernel
+def end_step(ctx, B, bad):
+    """Count non-finite bodies (slots into ``bad``); clear user forces when all is finite."""
+    n = ctx[0].n
+    k = count_nonfinite(B, n, bad)
+    if k == 0:
+        for i in range(n):
+            B.f[i, 0] = 0.0
+            B.f[i, 1] = 0.0
+            B.tau[i] = 0.0
+    return k

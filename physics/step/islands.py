@@ -1,0 +1,198 @@
+"""Islands and sleeping.
+
+Bodies linked by touching contacts or springs form an island (union-find
+over the contact graph, Tarjan 1975 with path halving).  An island sleeps
+when every body in it has stayed below the linear and angular speed
+thresholds for ``time_to_sleep``; a sleeping body is skipped by the broad
+phase against static and sleeping bodies, by the solvers and by the
+integrators, so a resting pile costs almost nothing.  A sleeping island
+wakes as a whole (bodies share an island label) when an awake body or a
+moving kinematic body touches it, or when the user edits one of its bodies.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .._jit import kernel
+from ..store import DYNAMIC, KINEMATIC
+
+
+@kernel
+def _find(parent, i):
+    while parent[i] != i:
+        parent[i] = parent[parent[i]]
+        i = parent[i]
+    return i
+
+
+@kernel
+def _union(parent, a, b):
+    ra = _find(parent, a)
+    rb = _find(parent, b)
+    if ra < rb:
+        parent[rb] = ra
+    elif rb < ra:
+        parent[ra] = rb
+
+
+@kernel
+def _wake_island(B, n, s):
+    lab = B.island[s]
+    if lab < 0:
+        B.awake[s] = 1
+        B.sleep_t[s] = 0.0
+        return
+    for i in range(n):
+        if B.island[i] == lab:
+            B.awake[i] = 1
+            B.sleep_t[i] = 0.0
+            B.island[i] = -1
+
+
+@kernel
+def _moving(B, i):
+    return B.v[i, 0] != 0.0 or B.v[i, 1] != 0.0 or B.w[i] != 0.0
+
+
+@kernel
+def _wake_touched(B, n, C, nc, S, ns, slop):
+    """Wake sleeping islands touched by awake dynamic or moving kinematic bodies."""
+    for k in range(nc):
+        touching = C.depth[k, 0] > -slop or (C.count[k] > 1 and C.depth[k, 1] > -slop)
+        if not touching:
+            continue
+        a = C.a[k]
+        b = C.b[k]
+        for side in range(2):
+            s = a if side == 0 else b
+            o = b if side == 0 else a
+            if B.kind[s] == DYNAMIC and B.awake[s] == 0 and B.awake[o] == 1:
+                if B.kind[o] == DYNAMIC or (B.kind[o] == KINEMATIC and _moving(B, o)):
+                    _wake_island(B, n, s)
+    for k in range(ns):
+        a = S.a[k]
+        b = S.b[k]
+        if b < 0:
+            continue
+        if B.awake[a] == 0 and B.awake[b] == 1 and B.kind[a] == DYNAMIC:
+            _wake_island(B, n, a)
+        elif B.awake[b] == 0 and B.awake[a] == 1 and B.kind[b] == DYNAMIC:
+            _wake_island(B, n, b)
+
+
+@kernel
+def _restless(B, i, lin_tol, ang_tol):
+    """Too fast to sleep: the centre or the rim (|w| times the bounding radius, as Box2D v3
+    measures rotation) moves faster than ``lin_tol``, or it spins faster than ``ang_tol``
+    (which only matters for tiny bodies, whose rims are slow even when spinning visibly)."""
+    v2 = B.v[i, 0] * B.v[i, 0] + B.v[i, 1] * B.v[i, 1]
+    w = abs(B.w[i])
+    return v2 > lin_tol * lin_tol or w * B.bound_r[i] > lin_tol or w > ang_tol
+
+
+@kernel
+def _wake_pushed(B, n, lin_tol, ang_tol):
+    """Sleepers are put to sleep at rest, so a velocity now came from an impulse this step
+    (e.g. a speculative row, not yet touching, that stopped a body thrown at the sleeper).
+    Above the sleep thresholds it wakes the island; below, it is a nudge and is dropped
+    (waking on every nudge would keep a settling pile from ever sleeping island by island)."""
+    for i in range(n):
+        if B.kind[i] != DYNAMIC or B.awake[i] == 1 or not _moving(B, i):
+            continue
+        if _restless(B, i, lin_tol, ang_tol):
+            _wake_island(B, n, i)
+        else:
+            B.v[i, 0] = 0.0
+            B.v[i, 1] = 0.0
+            B.w[i] = 0.0
+
+
+@kernel
+def update_islands(ctx, B, C, S, parent, min_t, label):
+    """One sleep update after the solver; returns the number of awake non-static bodies.
+
+    ``parent`` and ``min_t`` are scratch arrays of at least n entries; ``label``
+    a 1-element counter for fresh island labels.
+    """
+    c = ctx[0]
+    n = c.n
+    nc = c.nc
+    ns = c.ns
+    dt = c.dt
+    slop = c.slop
+    lin_tol = c.sleep_linear
+    ang_tol = c.sleep_angular
+    time_to_sleep = c.time_to_sleep
+    _wake_touched(B, n, C, nc, S, ns, slop)
+    _wake_pushed(B, n, lin_tol, ang_tol)
+    for i in range(n):
+        parent[i] = i
+        if B.kind[i] == DYNAMIC and B.awake[i] == 1:
+            if _restless(B, i, lin_tol, ang_tol):
+                B.sleep_t[i] = 0.0
+            else:
+                B.sleep_t[i] += dt
+    for k in range(nc):
+        touching = C.depth[k, 0] > -slop or (C.count[k] > 1 and C.depth[k, 1] > -slop)
+        if not touching:
+            continue
+        a = C.a[k]
+        b = C.b[k]
+        ka = B.kind[a]
+        kb = B.kind[b]
+        if ka == DYNAMIC and kb == DYNAMIC:
+            _union(parent, a, b)
+        # resting on a moving kinematic body is not rest
+        elif ka == KINEMATIC and _moving(B, a) and kb == DYNAMIC:
+            B.sleep_t[b] = 0.0
+        elif kb == KINEMATIC and _moving(B, b) and ka == DYNAMIC:
+            B.sleep_t[a] = 0.0
+    for k in range(ns):
+        a = S.a[k]
+        b = S.b[k]
+        if b >= 0 and B.kind[a] == DYNAMIC and B.kind[b] == DYNAMIC:
+            _union(parent, a, b)
+    for i in range(n):
+        min_t[i] = np.inf
+    for i in range(n):
+        if B.kind[i] == DYNAMIC and B.awake[i] == 1:
+            r = _find(parent, i)
+            if B.sleep_t[i] < min_t[r]:
+                min_t[r] = B.sleep_t[i]
+    awake = 0
+    for i in range(n):
+        if B.kind[i] == DYNAMIC and B.awake[i] == 1:
+            r = _find(parent, i)
+            if min_t[r] >= time_to_sleep:
+                # the root is the island's smallest slot (see _union), so it comes first
+                if i == r:
+                    label[0] += 1
+                    B.island[i] = label[0]
+                else:
+                    B.island[i] = B.island[r]
+                B.awake[i] = 0
+                B.v[i, 0] = 0.0
+                B.v[i, 1] = 0.0
+                B.w[i] = 0.0
+            else:
+                awake += 1
+        elif B.kind[i] == KINEMATIC and _moving(B, i):
+            awake += 1
+    return awake
+
+
+class Islands:
+    """Scratch for the sleep update, reused every step."""
+
+    def __init__(self):
+        self.parent = np.zeros(64, dtype=np.int64)
+        self.min_t = np.zeros(64)
+        self.label = np.zeros(1, dtype=np.int64)
+
+    def update(self, ctx, store) -> int:
+        n = store.bodies.n
+        if n > len(self.parent):
+            self.parent = np.zeros(2 * n, dtype=np.int64)
+            self.min_t = np.zeros(2 * n)
+        return update_islands(ctx.array, store.bodies.view, store.contacts.cur, store.springs.view,
+                              self.parent, self.min_t, self.label)

@@ -1,0 +1,217 @@
+"""The step, assembled from the stages a world needs.
+
+One step, as data flowing through it (docs/internals.md):
+
+    begin (save the last finite state, world geometry and AABBs)
+      -> broad phase (pairs of overlapping AABBs)
+      -> narrow phase (manifolds; per-point state carried from the last step)
+      -> solve (the solver mode: forces, contacts, springs, integration)
+      -> islands (sleep)
+      -> finish (finite check: revert and report, or clear user forces)
+
+Stages a world does not need are not run: nothing at all while every body
+sleeps, no sleep update with sleeping off.  Every stage reads the step context
+(physics/step/context.py) and the world's store; the solver mode also its
+parameter record.  ``World.profile`` is the last step's seconds per stage.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .. import options
+from ..collision import broadphase, narrowphase
+from ..errors import SimulationError
+from ..geometry.transform import update_geometry
+from ..store import DYNAMIC, KIND_NAMES, STATIC
+from .checkpoint import Checkpoint
+from .context import ModeParams, StepContext
+from .frame import begin_step, end_step
+from .islands import Islands
+from .profile import StepProfile
+
+
+class Pipeline:
+    def __init__(self):
+        self._pairs = np.zeros((256, 2), dtype=np.int32)
+        self.npairs = 0
+        self._checkpoint = Checkpoint()
+        self._islands = Islands()
+        self.ctx = StepContext()
+        self.profile = StepProfile()
+        self._params: dict[str, ModeParams] = {}
+        self.n_awake = -1  # unknown: run everything
+        self.dirty = True  # the world's settings changed: refresh the context's settings
+        self._dt = None
+
+    def invalidate(self) -> None:
+        """Something was edited: the next step runs in full."""
+        self.n_awake = -1
+
+    # -- the context ----------------------------------------------------
+    def _refresh(self, world, dt: float) -> None:
+        """Write this step's scalars into the step context (settings only when they changed)."""
+        ctx = self.ctx
+        store = world._store
+        ctx.set("step", world.steps)
+        ctx.set("n", store.bodies.n)
+        ctx.set("ns", store.springs.n)
+        ctx.set("nc", store.contacts.n)
+        if dt != self._dt:
+            ctx.set("dt", dt)
+            ctx.set("inv_dt", 1.0 / dt)
+            self._dt = dt
+        if self.dirty:
+            g = world._gravity
+            ctx.set("gx", g[0])
+            ctx.set("gy", g[1])
+            ctx.set("spec", world.speculative_distance)
+            ctx.set("slop", world.linear_slop)
+            ctx.set("sleep_linear", world.sleep_linear)
+            ctx.set("sleep_angular", world.sleep_angular)
+            ctx.set("time_to_sleep", world.time_to_sleep)
+            ctx.set("integrator", options.INTEGRATORS.index(world.integrator))
+            ctx.set("narrowphase", options.NARROWPHASES.index(world.narrowphase))
+            self.dirty = False
+
+    def params(self, world) -> ModeParams:
+        """The current mode's parameter record, reloaded when one of its settings changed."""
+        mode = world._mode
+        par = self._params.get(mode.name)
+        if par is None:
+            par = self._params[mode.name] = ModeParams(mode.settings, mode.derived)
+        vals = world._settings_store(mode.name)
+        if par.version != vals.version:
+            par.load(vals.values, vals.version)
+        return par
+
+    # -- stages ---------------------------------------------------------
+    def refresh_geometry(self, world, dt: float = 0.0) -> None:
+        s = world._store
+        update_geometry(s.bodies.view, s.verts.view, s.bodies.n, dt, world.speculative_distance)
+
+    def collide(self, world, dt: float, geometry: bool = True) -> None:
+        s = world._store
+        B = s.bodies.view
+        if geometry:
+            self.refresh_geometry(world, dt)
+        self.npairs, self._pairs = broadphase.find_pairs(B, s.bodies.n, world.broadphase, self._pairs)
+        self.profile.stamp("broadphase")
+        narrowphase.collide(self.ctx, B, s.verts.view, self._pairs, self.npairs, s.contacts)
+        self.ctx.set("nc", s.contacts.n)
+        self.profile.stamp("narrowphase")
+
+    def solve(self, world, dt: float) -> None:
+        par = self.params(world)
+        world._mode.derive(self.ctx, par, world._store)
+        world._mode.step(self.ctx, par, world._store)
+        self.profile.stamp("solve")
+
+    def sleep(self, world, dt: float) -> None:
+        if world.sleeping:
+            self.n_awake = self._islands.update(self.ctx, world._store)
+        else:
+            self.n_awake = -1
+        self.profile.stamp("islands")
+
+    STAGES = ("collide", "solve", "sleep")
+
+    # -- the step -------------------------------------------------------
+    def step(self, world, dt: float) -> None:
+        store = world._store
+        n = store.bodies.n
+        if n == 0 or (self.n_awake == 0 and world.sleeping):
+            world.time += dt
+            world.steps += 1
+            return
+        self.profile.start()
+        self._refresh(world, dt)
+        B = store.bodies.view
+        ck = self._checkpoint
+        ck.ensure(n)
+        begin_step(self.ctx.array, B, store.verts.view, ck.X, ck.Q, ck.V, ck.W)
+        self.profile.stamp("begin")
+        stage = "collide"
+        try:
+            self.collide(world, dt, geometry=False)
+            stage = "solve"
+            self.solve(world, dt)
+            stage = "sleep"
+            self.sleep(world, dt)
+        except SimulationError as err:
+            # a stage refused the step (e.g. an explicit integrator that cannot be stable)
+            self._revert(world)
+            err.stage = err.stage or stage
+            world.fault = err
+            raise
+        k = end_step(self.ctx.array, B, ck.bad)
+        if k:
+            self._fail(world, dt, ck.slots(k))
+        self.profile.stamp("finish")
+        self.profile.finish()
+        world.time += dt
+        world.steps += 1
+        world.fault = None
+
+    def _fail(self, world, dt: float, bad: list[int]) -> None:
+        """Revert, replay stage by stage to find the culprit, revert again, report."""
+        store = world._store
+        B = store.bodies.view
+        n = store.bodies.n
+        self._checkpoint.restore(B, n)
+        stage = "?"
+        for name in self.STAGES:
+            try:
+                getattr(self, name)(world, dt)
+            except SimulationError:
+                stage = name
+                break
+            if self._checkpoint.nonfinite(B, n):
+                stage = name
+                break
+        self._revert(world)
+        # static bodies only turn non-finite through 0 * inf; name the moving culprits first
+        moving = [s for s in bad if B.kind[s] != STATIC]
+        names = [world._handles[int(B.id[s])].name or f"#{int(B.id[s])}" for s in (moving or bad)]
+        err = SimulationError(
+            f"step at t={world.time:.4f} s produced non-finite values in {len(names)} bod"
+            f"{'y' if len(names) == 1 else 'ies'} ({', '.join(names[:8])}) during the '{stage}' stage "
+            f"of solver '{world.solver}'; the world was reverted to the state before the step",
+            bodies=names, stage=stage)
+        world.fault = err
+        raise err
+
+    def _revert(self, world) -> None:
+        """Back to the state before the step, without its user forces and contact impulses:
+        kept, they (and the non-finite impulses warm starting would re-apply) would fail every
+        later step too."""
+        store = world._store
+        B = store.bodies.view
+        n = store.bodies.n
+        self._checkpoint.restore(B, n)
+        B.f[:n] = 0.0
+        B.tau[:n] = 0.0
+        store.contacts.forget_impulses()
+        world.wake_all()
+
+    # -- description ----------------------------------------------------
+    def info(self, world) -> dict:
+        store = world._store
+        n = store.bodies.n
+        B = store.bodies.view
+        kinds = {k: int(np.sum(B.kind[:n] == v)) for v, k in KIND_NAMES.items()}
+        awake = int(np.sum((B.awake[:n] == 1) & (B.kind[:n] == DYNAMIC)))
+        values = world._settings_store(world.solver).values
+        stages = []
+        if n:
+            bp = broadphase.resolve(world.broadphase, n)
+            stages += ["geometry", f"broadphase:{bp}", f"narrowphase:{world.narrowphase}"]
+            stages += list(world._mode.stages(store, values, world.integrator))
+            if world.sleeping:
+                stages.append("islands/sleep")
+            stages.append("finite_check")
+        return {
+            "bodies": n, **kinds, "awake": awake, "springs": store.springs.n,
+            "contacts": store.contacts.n, "solver": world.solver, "integrator": world.integrator,
+            "settings": dict(values), "sleeping": world.sleeping,
+            "stages": stages,
+        }

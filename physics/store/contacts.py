@@ -1,0 +1,136 @@
+"""Contact manifolds as arrays: the narrow phase writes them, solvers read them.
+
+One row per touching (or speculatively close) pair, at most two points per
+row.  The normal points from body ``a`` to body ``b``.  ``depth`` is the
+penetration (positive when overlapping, negative for a speculative point
+that is still apart by that distance).  ``feature`` identifies the pair of
+features (vertex/edge indices) that made a point so that the per-point state
+carries over between steps (warm starting).  Rows are sorted by ``key``
+(stable ids of a and b) so matching with the previous step is a merge.
+
+Every field means one thing in every solver mode.  What persists per point
+from step to step:
+
+* ``jn``, ``jt``: the accumulated normal and tangent impulses (N s) over the
+  time span ``ContactBuffer.span`` of the mode that wrote them (a whole step
+  for sequential impulses, one sub-step for soft_step);
+* ``stick``: the stretch (m) of a penalty contact's tangential stick spring;
+* ``approach``: the fastest approach speed a penalty contact has seen, as the
+  most negative normal speed (m/s, <= 0).
+
+Per-step scratch of a solver (anchors, effective masses, biases) lives in that
+solver's own arrays, never here.
+"""
+from __future__ import annotations
+
+from collections import namedtuple
+
+import numpy as np
+
+from .table import allocate, f8, i1, i4, i8
+
+MAX_POINTS = 2
+
+CONTACT_FIELDS = {
+    "a": ((), i4),                 # body slot of a (the normal's tail)
+    "b": ((), i4),                 # body slot of b
+    "key": ((), i8),               # (id_a << 32) | id_b, sorted ascending
+    "count": ((), i1),             # points in this manifold (1 or 2)
+    "normal": ((2,), f8),          # unit normal, world, from a to b
+    "point": ((MAX_POINTS, 2), f8),  # world contact points (midway between the surfaces)
+    "depth": ((MAX_POINTS,), f8),  # penetration > 0, speculative gap < 0
+    "feature": ((MAX_POINTS,), i4),  # feature ids for warm-start matching
+    "jn": ((MAX_POINTS,), f8),     # accumulated normal impulse (N s) over `span`
+    "jt": ((MAX_POINTS,), f8),     # accumulated tangent impulse (N s) over `span`
+    "stick": ((MAX_POINTS,), f8),  # penalty stick-spring stretch (m)
+    "approach": ((MAX_POINTS,), f8),  # fastest approach seen by a penalty contact (m/s, <= 0)
+    "e": ((), f8),                 # combined restitution: max(e_a, e_b)
+    "mu_s": ((), f8),              # combined static friction: sqrt(mu_a mu_b)
+    "mu_d": ((), f8),              # combined dynamic friction: sqrt(mu_a mu_b)
+}
+#: the per-point state the narrow phase carries from a step's rows to the next step's
+CARRIED = ("jn", "jt", "stick", "approach")
+
+Contacts = namedtuple("Contacts", list(CONTACT_FIELDS))
+
+
+class ContactBuffer:
+    """Two contact tables (this step's and the previous), swapped every step.
+
+    ``span`` is the time span (s) the accumulated impulses ``jn``/``jt`` of the
+    current table stand for, and ``span_step`` the step whose solve may use them
+    as they are (see :meth:`adopt`).
+    """
+
+    def __init__(self, cap: int = 256):
+        self.cur = Contacts(**allocate(CONTACT_FIELDS, cap))
+        self.prev = Contacts(**allocate(CONTACT_FIELDS, cap))
+        self.n = 0
+        self.n_prev = 0
+        self.span = 0.0
+        self.span_step = -1
+
+    @property
+    def capacity(self) -> int:
+        return len(self.cur.a)
+
+    def ensure(self, need: int) -> None:
+        if need > self.capacity:
+            cap = max(need, 2 * self.capacity)
+            self.cur = Contacts(**allocate(CONTACT_FIELDS, cap))
+            old = self.prev
+            self.prev = Contacts(**allocate(CONTACT_FIELDS, cap))
+            for k in CONTACT_FIELDS:
+                getattr(self.prev, k)[: self.n_prev] = getattr(old, k)[: self.n_prev]
+
+    def swap(self) -> None:
+        """Make the current table the previous one before a new narrow phase."""
+        self.cur, self.prev = self.prev, self.cur
+        self.n_prev, self.n = self.n, 0
+
+    def adopt(self, span: float, step: int) -> None:
+        """Make the current impulses mean impulse over ``span`` seconds for the solve of ``step``.
+
+        What the accumulated impulses mean depends on the mode that wrote them:
+        ``sequential_impulse`` stores the impulse of a whole step, ``soft_step`` that of
+        one sub-step, the seed modes none.  Re-applying another mode's impulses as if
+        they were one's own kicks a resting pile (4x too much load after
+        sequential_impulse -> soft_step), so impulses written for the previous step
+        by a mode that recorded its span are rescaled to the caller's span; impulses
+        of unknown origin (a mode that does not record itself, or an older step) are
+        dropped, which costs only one cold step (Catto 2005: warm starting is only an
+        initial guess).
+        """
+        n = self.n
+        if self.span_step == step:
+            if self.span != span and n:
+                r = span / self.span
+                self.cur.jn[:n] *= r
+                self.cur.jt[:n] *= r
+        elif n:
+            self.cur.jn[:n] = 0.0
+            self.cur.jt[:n] = 0.0
+        # the next step sees these impulses (span) if nobody else steps in between
+        self.span = span
+        self.span_step = step + 1
+
+    def forget_impulses(self) -> None:
+        """Zero every carried point state of both tables (after a refused step)."""
+        for tab in (self.cur, self.prev):
+            for k in CARRIED:
+                getattr(tab, k)[:] = 0.0
+
+    def remap_removed_body(self, removed: int, moved_from: int) -> None:
+        """Drop rows touching a removed body slot; renumber the swapped-in body."""
+        for tab, attr in ((self.cur, "n"), (self.prev, "n_prev")):
+            n = getattr(self, attr)
+            a, b = tab.a[:n], tab.b[:n]
+            keep = (a != removed) & (b != removed)
+            a[a == moved_from] = removed
+            b[b == moved_from] = removed
+            if not keep.all():
+                idx = np.nonzero(keep)[0]
+                for k in CONTACT_FIELDS:
+                    arr = getattr(tab, k)
+                    arr[: len(idx)] = arr[idx]
+                setattr(self, attr, len(idx))

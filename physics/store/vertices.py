@@ -1,0 +1,69 @@
+"""The vertex pool: vertices of all polygons in one array; holes are compacted lazily.
+
+Vertices are stored relative to their body's centre of mass (where the
+equations of motion live), counter-clockwise, with the outward normal of the
+edge from each vertex to the next.  ``world`` and ``wnormal`` are refreshed
+every step by the geometry stage.
+"""
+from __future__ import annotations
+
+from collections import namedtuple
+
+import numpy as np
+
+from .table import allocate, f8, grown
+
+VERT_FIELDS = {
+    "local": ((2,), f8),    # vertex relative to the centre of mass, CCW order
+    "normal": ((2,), f8),   # outward unit normal of edge i -> i+1, body frame
+    "world": ((2,), f8),    # vertex in world coordinates (refreshed each step)
+    "wnormal": ((2,), f8),  # edge normal in world coordinates
+}
+Verts = namedtuple("Verts", list(VERT_FIELDS))
+
+
+class VertexPool:
+    """Vertices of all polygons in one array; holes are compacted lazily."""
+
+    def __init__(self, cap: int = 256):
+        self.arrays = allocate(VERT_FIELDS, cap)
+        self.top = 0
+        self.live = 0
+        self.view = Verts(**self.arrays)
+
+    def add(self, local: np.ndarray) -> int:
+        k = len(local)
+        if self.top + k > len(self.arrays["local"]):
+            self.arrays = grown(self.arrays, max(self.top + k, 2 * len(self.arrays["local"])))
+            self.view = Verts(**self.arrays)
+        s = self.top
+        self.arrays["local"][s:s + k] = local
+        e = np.roll(local, -1, axis=0) - local
+        nrm = np.stack([e[:, 1], -e[:, 0]], axis=1)
+        nrm /= np.hypot(nrm[:, 0], nrm[:, 1])[:, None]
+        self.arrays["normal"][s:s + k] = nrm
+        self.top += k
+        self.live += k
+        return s
+
+    def release(self, count: int) -> None:
+        self.live -= count
+
+    def needs_compaction(self) -> bool:
+        return self.top > 1024 and self.live < self.top // 2
+
+    def compact(self, vstart: np.ndarray, vcount: np.ndarray, n: int) -> None:
+        """Move live ranges to the front; rewrites ``vstart`` in place."""
+        order = np.argsort(vstart[:n], kind="stable")
+        dst = 0
+        for i in order:
+            c = int(vcount[i])
+            if c == 0:
+                continue
+            src = int(vstart[i])
+            for a in self.arrays.values():
+                a[dst:dst + c] = a[src:src + c].copy()
+            vstart[i] = dst
+            dst += c
+        self.top = dst
+        self.live = dst

@@ -1,0 +1,103 @@
+"""Read-only views of a world: its state, its touching contacts, arrays for drawing, point queries."""
+from __future__ import annotations
+
+from collections import namedtuple
+
+import numpy as np
+
+from .store import CIRCLE
+
+STATE_DTYPE = np.dtype([("id", np.int64), ("position", np.float64, (2,)), ("angle", np.float64),
+                        ("velocity", np.float64, (2,)), ("angular_velocity", np.float64), ("awake", np.bool_)])
+
+Contact = namedtuple("Contact", "body_a body_b points normal depth")
+RenderData = namedtuple(
+    "RenderData",
+    "vertices vstart vcount kind awake shape radius center angle com ids aabb "
+    "spring_ends contact_points contact_normals")
+
+
+def state(world) -> np.ndarray:
+    """Every body's state as a read-only structured array (STATE_DTYPE), in body order."""
+    n = world._store.bodies.n
+    B = world._store.bodies.view
+    out = np.zeros(n, STATE_DTYPE)
+    q = B.q[:n]
+    c, s = np.cos(q), np.sin(q)
+    com = B.com[:n]
+    out["id"] = B.id[:n]
+    out["position"][:, 0] = B.x[:n, 0] - (c * com[:, 0] - s * com[:, 1])
+    out["position"][:, 1] = B.x[:n, 1] - (s * com[:, 0] + c * com[:, 1])
+    out["angle"] = q
+    out["velocity"] = B.v[:n]
+    out["angular_velocity"] = B.w[:n]
+    out["awake"] = B.awake[:n] != 0
+    out.setflags(write=False)
+    return out
+
+
+def contacts(world) -> list:
+    """Touching contacts of the last step (normal from body_a to body_b, depth > -slop)."""
+    c = world._store.contacts
+    out = []
+    ids = world._store.bodies.view.id
+    for k in range(c.n):
+        m = int(c.cur.count[k])
+        keep = [p for p in range(m) if c.cur.depth[k, p] > -world.linear_slop]
+        if not keep:
+            continue
+        out.append(Contact(world._handles[int(ids[c.cur.a[k]])], world._handles[int(ids[c.cur.b[k]])],
+                           [tuple(map(float, c.cur.point[k, p])) for p in keep],
+                           tuple(map(float, c.cur.normal[k])),
+                           max(float(c.cur.depth[k, p]) for p in keep)))
+    return out
+
+
+def query_point(world, p):
+    """The topmost (last added) body containing world point ``p``, or None."""
+    n = world._store.bodies.n
+    B = world._store.bodies.view
+    world._pipeline.refresh_geometry(world)
+    box = B.aabb[:n]
+    cand = np.nonzero((box[:, 0] <= p[0]) & (p[0] <= box[:, 2]) & (box[:, 1] <= p[1]) & (p[1] <= box[:, 3]))[0]
+    V = world._store.verts.view
+    for s in cand[::-1]:
+        if B.shape[s] == CIRCLE:
+            if np.hypot(*(p - B.x[s])) <= B.radius[s]:
+                return world._handles[int(B.id[s])]
+            continue
+        a, k = int(B.vstart[s]), int(B.vcount[s])
+        if np.all(np.einsum("ij,ij->i", p - V.world[a:a + k], V.wnormal[a:a + k]) <= 0):
+            return world._handles[int(B.id[s])]
+    return None
+
+
+def render_data(world) -> RenderData:
+    """Arrays for drawing (views into the world's state: read, do not write)."""
+    world._pipeline.refresh_geometry(world)
+    st = world._store
+    n = st.bodies.n
+    B = st.bodies.view
+    V = st.verts.view
+    S = st.springs.view
+    ns = st.springs.n
+    ends = np.zeros((ns, 2, 2))
+    if ns:
+        ends[:, 0] = _anchor_world(B, S.a[:ns], S.la[:ns])
+        world_b = S.b[:ns] < 0
+        ends[:, 1] = np.where(world_b[:, None], S.lb[:ns],
+                              _anchor_world(B, np.maximum(S.b[:ns], 0), S.lb[:ns]))
+    c = st.contacts
+    cnt = c.cur.count[: c.n].astype(np.int64)
+    mask = np.arange(2)[None, :] < cnt[:, None]
+    pts = c.cur.point[: c.n][mask]
+    nrm = np.repeat(c.cur.normal[: c.n], cnt, axis=0)
+    return RenderData(V.world[: st.verts.top], B.vstart[:n], B.vcount[:n], B.kind[:n], B.awake[:n],
+                      B.shape[:n], B.radius[:n], B.x[:n], B.q[:n], B.com[:n], B.id[:n], B.aabb[:n],
+                      ends, pts, nrm)
+
+
+def _anchor_world(B, slots, local):
+    q = B.q[slots]
+    c, s = np.cos(q), np.sin(q)
+    return B.x[slots] + np.stack([c * local[:, 0] - s * local[:, 1], s * local[:, 0] + c * local[:, 1]], 1)
