@@ -5,7 +5,7 @@
 Broad phase: every method on random boxes in a square region and on a packed
 pyramid over a wide static ground box, 1k and 10k bodies, plus a sweep over
 small counts that locates where brute force stops paying (the "auto"
-crossover).  Narrow phase: ``physics.narrowphase.collide`` over many
+crossover).  Narrow phase: ``physics.collision.narrowphase.collide`` over many
 separated, overlapping pairs of one shape combination, per method.
 The first call of each kernel (numba compile, or loading its cache) is
 reported apart from the timings.  Results also go to

@@ -1,4 +1,4 @@
-"""The whole narrow-phase pass (``physics.narrowphase.collide``) on hand-built states.
+"""The whole narrow-phase pass (``physics.collision.narrowphase.collide``) on hand-built states.
 
 States are filled by hand (Table + VertexPool + update_geometry) so these
 tests depend only on the store layout, not on the World class.
