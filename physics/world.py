@@ -40,7 +40,8 @@ class World(BodiesMixin, SpringsMixin):
     """A 2D rigid-body world.
 
     ``World(gravity=(0, -9.81), dt=1/60, solver="soft_step")``; add bodies with
-    :meth:`add_body`, springs with :meth:`add_spring`, advance with :meth:`step`.
+    :meth:`~physics.World.add_body`, springs with :meth:`~physics.World.add_spring`, advance with
+    :meth:`step`.
     Contacts combine friction by the geometric mean and restitution by the
     maximum of the two bodies' coefficients.
     """
