@@ -12,7 +12,7 @@ One concept per module, imports running one way (top to bottom):
 * report/ -- tables, the terminal report, docs/benchmarks.md, the result files; plots.py.
 * speed.py, scaling.py, accuracy_runs.py, profile.py, overhead.py, startup.py -- the parts.
 * timing.py (interleaved chunks), metrics.py (penetration, drift), accuracy.py (scenarios with
-  known answers), stage_timers.py.
+  known answers).
 * cases.py, configs.py, scenes.py, desc.py -- plain data: cases, solver configurations, the
   benchmark scenes, scene descriptions.  A case carries its description and settings, never
   live objects, so it runs the same in any process.

@@ -5,8 +5,7 @@
 ``world.profile`` holds the seconds of every pipeline stage of the last step (like Box2D's
 b2Profile) and their sum (``step``).  The world steps normally; each ``world.step()`` call is
 timed and its profile added up outside the timed call.  "python/other" is the wall time of
-``world.step()`` outside every stage (argument checks and glue in ``World.step``).  A core
-without ``world.profile`` is timed by wrapping its stage entry points (bench/stage_timers.py).
+``world.step()`` outside every stage (argument checks and glue in ``World.step``).
 """
 from __future__ import annotations
 
@@ -15,12 +14,10 @@ import time
 
 import numpy as np
 
-from . import stage_timers
-
 TOTAL = "step"  # world.profile's sum of its stages
-# the stages of results measured with timers wrapped around the pipeline's entry points (a core
-# without world.profile; older bench.json files)
-LEGACY_STAGES = stage_timers.STAGES
+# the stages of results measured before the core timed its own stages (timers were wrapped around
+# the pipeline's entry points): kept so that --docs-only renders older bench.json files
+LEGACY_STAGES = ("checkpoint+geometry", "broadphase", "narrowphase", "solver", "sleep/islands", "finite_check")
 
 
 def stage_names(world) -> list[str]:
@@ -56,8 +53,6 @@ def stage_profile(world, steps=200, warm=30, chunk=20) -> dict:
 
     Returns {"us_per_step": {stage: us, "total", "python/other", "median_total"}, "stage_names",
     "contacts", "bodies", "pairs", "stages"}."""
-    if not hasattr(type(world), "profile"):  # a core that does not time its own stages
-        return stage_timers.stage_profile(world, steps, warm, chunk)
     for _ in range(warm):
         world.step()
     names = stage_names(world)
