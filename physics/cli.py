@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import sys
 
 from .errors import SceneError, SimulationError
@@ -21,7 +22,13 @@ from .errors import SceneError, SimulationError
 WORLD_KEYS = ("gravity", "integrator", "sleeping", "broadphase", "narrowphase")
 
 
+# the longest message printed for a bad option (the value itself may be megabytes)
+MAX_MESSAGE_CHARS = 500
+
+
 def main(argv=None) -> int:
+    """Run the command line with ``argv`` (default sys.argv[1:]); returns the exit code."""
+    _printable_output()
     args = _parser().parse_args(argv)
     try:
         return args.run(args)
@@ -32,8 +39,28 @@ def main(argv=None) -> int:
         return 0
 
 
+def _printable_output() -> None:
+    """Escape what the terminal cannot encode (a file name that is not UTF-8 reaches us with lone
+    surrogates) instead of dying with UnicodeEncodeError half-way through the output."""
+    for stream in (sys.stdout, sys.stderr):
+        if hasattr(stream, "reconfigure"):
+            stream.reconfigure(errors="backslashreplace")
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse, but a bad option exits 1 as documented (exit code 2 means a non-finite run)."""
+
+    def error(self, message):
+        self.print_usage(sys.stderr)
+        self.exit(1, f"{self.prog}: error: {_clip(message)}\n")
+
+
+def _clip(text: str) -> str:
+    return text if len(text) <= MAX_MESSAGE_CHARS else f"{text[:MAX_MESSAGE_CHARS - 40]}... ({len(text)} characters)"
+
+
 def _parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="stelkropp-sim", description="Run, check and describe Stelkropp scene files.")
+    p = _Parser(prog="stelkropp-sim", description="Run, check and describe Stelkropp scene files.")
     sub = p.add_subparsers(required=True, metavar="COMMAND")
     sim = sub.add_parser("simulate", help="run a scene headless and write the final state as JSON")
     sim.add_argument("scene")
@@ -59,31 +86,74 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _count(text: str) -> int:
-    n = int(text)
+    try:
+        n = int(text) if len(text) <= 30 else -1
+    except ValueError:
+        n = -1
     if n < 0:
-        raise argparse.ArgumentTypeError(f"must be >= 0, got {n}")
+        raise argparse.ArgumentTypeError(f"expected a whole number >= 0 (at most 30 digits), got {_clip(repr(text))}")
     return n
 
 
 # -- simulate -----------------------------------------------------------------
 def simulate(args) -> int:
     from .scene import load_scene
+    problem = args.out is not None and _out_problem(args.out)
+    if problem:  # before the run, so a long simulation is never lost to a typo in --out
+        print(f"--out {args.out}: {problem}", file=sys.stderr)
+        return 1
     world = load_scene(args.scene)
     try:
         _configure(world, args)
-    except (ValueError, KeyError) as exc:
-        print(f"{args.scene}: {exc.args[0] if exc.args else exc}", file=sys.stderr)
+    except (ValueError, KeyError, TypeError, OverflowError) as exc:
+        print(f"{args.scene}: {_clip(str(exc.args[0] if exc.args else exc))}", file=sys.stderr)
         return 1
     result, code = _run(world, args.steps, args.record)
-    text = json.dumps(result, allow_nan=False) + "\n"
+    text = json.dumps(_json_safe(result), allow_nan=False) + "\n"
     if args.out:
-        from .scene.json_io import write_atomic
-        write_atomic(args.out, text)
+        from .scene.atomic import write_atomic
+        try:
+            write_atomic(args.out, text)
+        except OSError as exc:
+            print(f"--out {args.out}: cannot write it ({exc.strerror or exc}); the result follows on stdout",
+                  file=sys.stderr)
+            sys.stdout.write(text)
+            return 1
     else:
         sys.stdout.write(text)
     if code:
         print(result["error"], file=sys.stderr)
     return code
+
+
+def _out_problem(path: str) -> str | None:
+    """Why ``--out path`` could not be written, checked before the run (None if it looks writable)."""
+    target = os.path.realpath(path)
+    if os.path.isdir(target):
+        return "is a folder; give a file name"
+    folder = os.path.dirname(target)
+    if not os.path.isdir(folder):
+        return f"the folder {folder} does not exist"
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return f"cannot write in the folder {folder}"
+    try:
+        limit = os.pathconf(folder, "PC_NAME_MAX")
+    except (OSError, ValueError):
+        limit = 255
+    if len(os.fsencode(os.path.basename(target))) > limit:
+        return f"the file name is longer than this file system allows ({limit} bytes)"
+    return None
+
+
+def _json_safe(value):
+    """The result with non-finite numbers as null (its "finite" field already says so)."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: _json_safe(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_json_safe(v) for v in value]
+    return value
 
 
 def _configure(world, args) -> None:
@@ -96,21 +166,54 @@ def _configure(world, args) -> None:
         if not sep or not key:
             raise ValueError(f"--set expects KEY=VALUE, got {item!r}")
         value = _value(raw)
+        if _is_switch(world, key):
+            value = _switch(key, raw, value)
         if key in WORLD_KEYS:
             setattr(world, key, value)
         else:
             world.settings[key] = value
 
 
+# spellings of a yes/no option on the command line (issue 20: "--set sleeping=off" turned sleeping on)
+_ON, _OFF = ("true", "on", "yes", "1"), ("false", "off", "no", "0")
+
+
+def _is_switch(world, key: str) -> bool:
+    """Whether ``key`` is a yes/no option: the world's ``sleeping`` or a mode's boolean setting."""
+    if key == "sleeping":
+        return True
+    decl = world.settings.declared().get(key) if key not in WORLD_KEYS else None
+    return decl is not None and decl.type is bool
+
+
+def _switch(key: str, raw: str, value) -> bool:
+    """``--set KEY=on|off|true|false|yes|no|1|0`` (any case) as a bool; ValueError naming ``key`` else."""
+    if isinstance(value, bool):
+        return value
+    word = raw.strip().lower()
+    if word in _ON or word in _OFF:
+        return word in _ON
+    raise ValueError(f"--set {key}: expected one of {', '.join(_ON + _OFF)}, got {_clip(repr(raw))}")
+
+
 def _value(raw: str):
-    """JSON if it parses (numbers, true, lists), else the bare word; NaN/Infinity refused."""
+    """JSON if it parses (numbers, true, lists), else the bare word; NaN, Infinity and numbers
+    beyond float range refused (ValueError)."""
     from .scene.json_io import NonFinite, parse
     try:
         v = parse(raw)
     except ValueError:
         return raw
-    if isinstance(v, NonFinite) or (isinstance(v, list) and any(isinstance(x, NonFinite) for x in v)):
-        raise ValueError(f"--set value {raw!r} is not finite")
+    stack = [v]
+    while stack:  # without recursion: the value may nest deeply
+        x = stack.pop()
+        if isinstance(x, NonFinite):
+            shown = repr(raw) if len(raw) <= 80 else repr(raw[:60]) + f"... ({len(raw)} characters)"
+            raise ValueError(f"--set value {shown} is not finite (or beyond the range of a float)")
+        if isinstance(x, list):
+            stack += x
+        elif isinstance(x, dict):
+            stack += x.values()
     return v
 
 
@@ -135,6 +238,8 @@ def _run(world, steps: int, record: int | None):
         frames.append(state(world))
     result = state(world)
     result["finite"] = error is None and _finite(result)
+    if error is None and not result["finite"]:  # the world's finite check should have refused the step
+        error = "the final state holds non-finite values"
     if error is not None:
         result["error"] = error
     if record:

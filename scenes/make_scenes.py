@@ -20,7 +20,8 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 
 from physics.scene import scene_from_dict, scene_to_dict, scene_metadata  # noqa: E402
-from physics.scene.json_io import dumps, write_atomic  # noqa: E402
+from physics.scene.atomic import write_atomic  # noqa: E402
+from physics.scene.json_io import dumps  # noqa: E402
 from physics.scene.schema import SCHEMA_FILE, schema_text  # noqa: E402
 
 DT = 1.0 / 60.0

@@ -169,3 +169,129 @@ def test_console_script_is_declared():
 def test_schema_prints_the_published_schema(capsys):
     code, out, _ = run(capsys, "schema")
     assert code == 0 and out == (ROOT / "scenes" / "stelkropp.schema.json").read_text()
+
+
+# -- issue 20: hostile input never gives a traceback ----------------------------------------------
+def scene_file(tmp_path, text, name="hostile.json"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8", errors="surrogatepass")
+    return p
+
+
+def lone_surrogate_scene(tmp_path):
+    data = json.loads(Path(SCENE).read_text())
+    data["name"] = "evil@name"
+    return scene_file(tmp_path, json.dumps(data).replace("@", "\\ud800"))
+
+
+def test_info_and_validate_refuse_a_name_with_a_lone_surrogate(capsys, tmp_path):
+    p = lone_surrogate_scene(tmp_path)
+    code, out, err = run(capsys, "info", p)
+    assert code == 1 and out == "" and "lone surrogate" in err and "Traceback" not in err
+    code, out, _ = run(capsys, "validate", p)
+    assert code == 1 and ": ok (" not in out and "name: not valid Unicode" in out
+
+
+def test_python_dash_m_physics_with_hostile_scenes_prints_no_traceback(tmp_path):
+    """Real processes (their stdout/stderr encodings, not pytest's): each hostile scene exits 1."""
+    env = dict(os.environ, PYTHONPATH=str(ROOT), PYTHONIOENCODING="utf-8")
+    deep = scene_file(tmp_path, '{"format": "stelkropp.scene", "version": 1, "bodies": ' + "[" * 500 + "]" * 500 + "}",
+                      "deep.json")
+    big = scene_file(tmp_path, Path(SCENE).read_text().replace('"restitution": 0.5', '"restitution": ' + "9" * 400),
+                     "big.json")
+    weird_name = tmp_path / os.fsdecode(b"caf\xe9.json")  # not UTF-8: argv carries a lone surrogate
+    weird_name.write_text(Path(SCENE).read_text())
+    for args, code in ((["info", lone_surrogate_scene(tmp_path)], 1), (["validate", deep, big], 1),
+                       (["info", weird_name], 0), (["validate", weird_name], 0)):
+        res = subprocess.run([sys.executable, "-m", "physics", *map(str, args)], capture_output=True, text=True,
+                             env=env, cwd=tmp_path, timeout=600, errors="backslashreplace")
+        assert res.returncode == code, (args, res.stdout, res.stderr)
+        assert "Traceback" not in res.stderr, res.stderr
+
+
+@pytest.mark.parametrize("where, words", [
+    ("folder", "is a folder"),
+    ("missing/state.json", "does not exist"),
+    ("n" * 300 + ".json", "file name is longer"),
+])
+def test_bad_out_is_refused_before_the_run(capsys, tmp_path, monkeypatch, where, words):
+    ran = []
+    monkeypatch.setattr(physics.World, "step", lambda self, dt=None: ran.append(1))
+    (tmp_path / "folder").mkdir()
+    code, out, err = run(capsys, "simulate", SCENE, "--steps", 5, "--out", tmp_path / where)
+    assert code == 1 and out == "" and words in err and not ran
+
+
+def test_out_that_fails_after_the_run_still_gives_the_result(capsys, tmp_path, monkeypatch):
+    import physics.scene.atomic as atomic
+
+    def full(*_):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(atomic.os, "fsync", full)
+    code, out, err = run(capsys, "simulate", SCENE, "--steps", 3, "--out", tmp_path / "state.json")
+    assert code == 1 and "No space left" in err and json.loads(out)["steps"] == 3
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("value, words", [
+    ("substeps=" + "9" * 400, "not finite"),
+    ("substeps=" + "9" * 5000, "not finite"),
+    ("gravity=[0," + "9" * 400 + "]", "not finite"),
+    ("gravity=" + "[" * 100_000, "gravity"),
+    ("integrator=" + "x" * 2_000_000, "integrator"),
+    ("relax=" + "[" * 50 + "]" * 50, "relax"),
+])
+def test_huge_set_values_exit_1_with_a_short_message(capsys, value, words):
+    code, out, err = run(capsys, "simulate", SCENE, "--steps", 1, "--set", value)
+    assert code == 1 and out == "" and words in err
+    assert len(err) < 2000
+
+
+@pytest.mark.parametrize("steps", ["-1", "1e3", "9" * 5000])
+def test_bad_step_counts_exit_1(capsys, steps):
+    with pytest.raises(SystemExit) as info:
+        cli.main(["simulate", SCENE, "--steps", steps])
+    assert info.value.code == 1
+    assert len(capsys.readouterr().err) < 2000
+
+
+def test_non_finite_state_is_written_as_null_not_a_traceback(capsys, monkeypatch):
+    real = cli.state
+
+    def overflowed(world):
+        st = real(world)
+        st["bodies"][1]["velocity"] = [float("inf"), 0.0]
+        return st
+
+    monkeypatch.setattr(cli, "state", overflowed)
+    code, out, err = run(capsys, "simulate", SCENE, "--steps", 2)
+    res = json.loads(out)
+    assert code == 2 and res["finite"] is False and res["bodies"][1]["velocity"] == [None, 0.0]
+    assert "non-finite" in res["error"] and "non-finite" in err
+
+
+@pytest.mark.parametrize("word, on", [("off", False), ("OFF", False), ("no", False), ("0", False), ("false", False),
+                                      ("on", True), ("Yes", True), ("1", True), ("true", True)])
+def test_set_sleeping_accepts_on_off_words(capsys, monkeypatch, word, on):
+    """Issue 20 item 5: ``--set sleeping=off`` turned sleeping on (a non-empty string is truthy)."""
+    seen = {}
+    real = physics.World.step
+
+    def spy(self, dt=None):
+        seen["sleeping"], seen["relax"] = self.sleeping, self.settings["relax"]
+        return real(self, dt)
+
+    monkeypatch.setattr(physics.World, "step", spy)
+    code, _, err = run(capsys, "simulate", SCENE, "--steps", 1, "--solver", "soft_step",
+                       "--set", f"sleeping={word}", "--set", f"relax={word}")
+    assert code == 0, err
+    assert seen == {"sleeping": on, "relax": on}
+
+
+@pytest.mark.parametrize("item", ["sleeping=maybe", "sleeping=2", "sleeping=", "relax=offf", "relax=[1]"])
+def test_set_switch_with_another_word_exits_1_naming_it(capsys, item):
+    code, out, err = run(capsys, "simulate", SCENE, "--steps", 1, "--solver", "soft_step", "--set", item)
+    key = item.partition("=")[0]
+    assert code == 1 and out == ""
+    assert f"--set {key}: expected one of true, on, yes, 1, false, off, no, 0" in err

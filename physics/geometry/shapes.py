@@ -8,12 +8,18 @@ degrees).
 from __future__ import annotations
 
 import math
+import sys
 
 import numpy as np
 
 MAX_POLYGON_VERTICES = 64
 # a vertex turn smaller than this (sine of the angle) counts as collinear
 _COLLINEAR_SINE = 1e-9
+# a polygon's area must be at least this fraction of its extent squared to be told from a line
+_MIN_AREA_RATIO = 1e-12
+# |coordinate| limit for shape geometry (m): keeps sums and squares in the checks finite; the mass
+# check refuses anything over about 1e76 m anyway (its second moment, ~size^4, would overflow)
+MAX_COORDINATE = 1e150
 
 
 class Shape:
@@ -32,14 +38,59 @@ class Shape:
 
 def _as_points(vertices, what="vertices") -> np.ndarray:
     try:
+        if np.asarray(vertices).dtype.kind in "USVa":  # numpy would parse "1.5"; text is not a number
+            raise TypeError("coordinates must be numbers, not text")
         pts = np.array(vertices, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"{what}: expected a list of (x, y) pairs ({exc})") from None
+    except (TypeError, ValueError, OverflowError) as exc:
+        raise ValueError(f"{what}: expected a list of (x, y) pairs ({_clip(str(exc))})") from None
     if pts.ndim != 2 or pts.shape[1] != 2:
         raise ValueError(f"{what}: expected a list of (x, y) pairs, got shape {pts.shape}")
     if not np.all(np.isfinite(pts)):
         raise ValueError(f"{what}: coordinates must be finite (found NaN or inf)")
+    if np.any(np.abs(pts) > MAX_COORDINATE):
+        raise ValueError(f"{what}: coordinates beyond {MAX_COORDINATE:g} m; the shape is too large to represent")
     return pts
+
+
+def _clip(text: str, limit: int = 120) -> str:
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def _show(value) -> str:
+    """repr(value) for a message, clipped (a 5000-digit integer has no repr in Python 3.11+)."""
+    try:
+        return _clip(repr(value))
+    except ValueError:
+        return f"an integer of {value.bit_length()} bits"
+
+
+def _number(value, what: str) -> float:
+    """``value`` as a float: a real number (not text or a boolean) within float range, or ValueError."""
+    if isinstance(value, (bool, str, bytes, bytearray)):
+        raise ValueError(f"{what} must be a number, got {_show(value)}")
+    try:
+        return float(value)
+    except OverflowError:
+        raise ValueError(f"{what} is beyond the range of a float") from None
+    except (TypeError, ValueError):
+        raise ValueError(f"{what} must be a number, got {_show(value)}") from None
+
+
+def _positive(value, what: str) -> float:
+    x = _number(value, what)
+    if not math.isfinite(x) or x <= 0:
+        raise ValueError(f"{what} must be positive and finite, got {_show(value)}")
+    return x
+
+
+def _check_mass_scale(area: float, inertia: float, what: str, size: float) -> None:
+    """Refuse geometry whose area or second moment (per unit density) no float can hold."""
+    if not (math.isfinite(area) and math.isfinite(inertia)):
+        raise ValueError(f"{what} is too large: {size:g} m across, its moment of inertia overflows a float "
+                         "(sizes up to about 1e76 m can be represented)")
+    if area < sys.float_info.min or inertia < sys.float_info.min:
+        raise ValueError(f"{what} is too small: {size:g} m across, its area or moment of inertia underflows "
+                         "a float")
 
 
 def _signed_area(p: np.ndarray) -> float:
@@ -68,8 +119,11 @@ class Polygon(Shape):
             raise ValueError(f"polygon has {n} vertices; at most {MAX_POLYGON_VERTICES} are supported")
         scale = float(np.max(np.abs(pts - pts.mean(axis=0)))) or 0.0
         area = _signed_area(pts - pts.mean(axis=0))  # centred: see centroid
-        if scale == 0.0 or abs(area) <= 1e-12 * scale * scale:
+        if scale == 0.0 or area == 0.0:
             raise ValueError("polygon has zero area (all vertices coincide or lie on one line)")
+        if abs(area) <= _MIN_AREA_RATIO * scale * scale:  # scale <= 1e150: the square is finite
+            raise ValueError(f"polygon is too thin: its area is {abs(area) / (scale * scale):.1e} of its extent "
+                             f"squared (at least {_MIN_AREA_RATIO:g}, else it cannot be told from a line)")
         if area < 0:
             pts = pts[::-1].copy()
             area = -area
@@ -77,25 +131,37 @@ class Polygon(Shape):
         self.vertices = pts
         self.vertices.setflags(write=False)
         self._spec = _spec if _spec is not None else {"polygon": pts.tolist()}
+        with np.errstate(over="ignore"):  # overflow is what the check looks for
+            m, _, inertia = self.mass_properties(1.0)
+        _check_mass_scale(m, inertia, "polygon", 2 * scale)
 
     # -- constructors -------------------------------------------------
     @classmethod
     def box(cls, width: float, height: float) -> "Polygon":
-        """An axis-aligned box centred on the body origin."""
-        w, h = float(width), float(height)
+        """An axis-aligned box ``width`` x ``height`` (m, each > 0) centred on the body origin;
+        ValueError for sizes that are not positive finite numbers or too large, small or thin."""
+        w, h = _number(width, "box width"), _number(height, "box height")
         if not (math.isfinite(w) and math.isfinite(h)) or w <= 0 or h <= 0:
-            raise ValueError(f"box size must be positive and finite, got ({width}, {height})")
+            raise ValueError(f"box size must be positive and finite, got ({_show(width)}, {_show(height)})")
+        if max(w, h) > 2 * MAX_COORDINATE:
+            raise ValueError(f"box size ({w:g}, {h:g}) m is too large to represent (its moment of inertia "
+                             "overflows a float beyond about 1e76 m)")
         hw, hh = 0.5 * w, 0.5 * h
         return cls([(-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh)], _spec={"box": [w, h]})
 
     @classmethod
     def regular(cls, sides: int, radius: float) -> "Polygon":
-        """A regular polygon with circumradius ``radius`` and a flat bottom edge."""
-        if int(sides) != sides or not 3 <= sides <= MAX_POLYGON_VERTICES:
-            raise ValueError(f"regular polygon needs 3..{MAX_POLYGON_VERTICES} sides, got {sides}")
-        r = float(radius)
-        if not math.isfinite(r) or r <= 0:
-            raise ValueError(f"regular polygon radius must be positive and finite, got {radius}")
+        """A regular polygon of ``sides`` (an integer 3..64) with circumradius ``radius`` (m, > 0)
+        and a flat bottom edge; ValueError naming the bad argument."""
+        try:  # comparisons first: int() of inf, NaN or text would raise something else
+            whole = not isinstance(sides, (bool, str, bytes)) and 3 <= sides <= MAX_POLYGON_VERTICES \
+                and int(sides) == sides
+        except (TypeError, ValueError, OverflowError):
+            whole = False
+        if not whole:
+            raise ValueError(f"regular polygon needs an integer 3..{MAX_POLYGON_VERTICES} sides, "
+                             f"got {_show(sides)}")
+        r = _positive(radius, "regular polygon radius")
         sides = int(sides)
         a0 = -0.5 * math.pi + math.pi / sides
         pts = [(r * math.cos(a0 + 2 * math.pi * k / sides), r * math.sin(a0 + 2 * math.pi * k / sides))
@@ -110,8 +176,10 @@ class Polygon(Shape):
         """
         pts = _as_points(points, "points")
         h = _prune_degenerate(convex_hull(pts))
-        if len(h) < 3:
-            raise ValueError("points have no area: their convex hull is a point or a segment")
+        c = h - h.mean(axis=0) if len(h) else h
+        if len(h) < 3 or abs(_signed_area(c)) <= _MIN_AREA_RATIO * float(np.max(np.abs(c))) ** 2:
+            raise ValueError("points have no area: their convex hull is a point, a segment or too thin to "
+                             "tell from one")
         if len(h) > MAX_POLYGON_VERTICES:
             raise ValueError(f"hull has {len(h)} vertices; at most {MAX_POLYGON_VERTICES} are supported")
         return cls(h)
@@ -174,9 +242,11 @@ class Circle(Shape):
     kind = "circle"
 
     def __init__(self, radius: float, offset=(0.0, 0.0)):
-        r = float(radius)
-        if not math.isfinite(r) or r <= 0:
-            raise ValueError(f"circle radius must be positive and finite, got {radius}")
+        """``radius`` (m, > 0) and ``offset`` (m, the centre in body coordinates); ValueError for
+        a radius that is not a positive finite number or is too large or small to represent."""
+        r = _positive(radius, "circle radius")
+        area = math.pi * (r * r)  # products, not **: a huge radius gives inf here, never OverflowError
+        _check_mass_scale(area, 0.5 * area * r * r, "circle", 2 * r)
         off = _as_points([offset], "offset")[0]
         self.radius = r
         self.offset = off
@@ -194,7 +264,7 @@ class Circle(Shape):
 
     @property
     def area(self) -> float:
-        return math.pi * self.radius ** 2
+        return math.pi * (self.radius * self.radius)
 
     @property
     def centroid(self) -> np.ndarray:
@@ -202,7 +272,7 @@ class Circle(Shape):
 
     def mass_properties(self, density: float):
         m = density * self.area
-        return m, self.offset.copy(), 0.5 * m * self.radius ** 2
+        return m, self.offset.copy(), 0.5 * m * (self.radius * self.radius)
 
     def __repr__(self):
         return f"Circle({self.radius}, offset={self.offset.tolist()})"

@@ -13,7 +13,9 @@ One concept per module, imports running one way (this package imports the
 world; the world imports only ``save``, lazily, for ``World.save_scene``):
 
     schema    the format as a JSON Schema, with every default and limit
-    json_io   strict, bounded JSON parsing; canonical JSON text; atomic file writes
+    json_io   strict, bounded JSON parsing; canonical JSON text
+    atomic    atomic file writes (temp file, fsync, rename; no temp file left behind)
+    problems  JSON paths, value previews and one size-bounded SceneError
     checks    every problem in scene data as (JSON path, reason)
     load      scene data or files -> World
     dump      World -> scene data that reloads bit for bit

@@ -1,29 +1,30 @@
 """Every problem in scene data, each as (JSON path, reason).
 
-Order of checks: format and version (if the file is not a version-1 scene,
-nothing else is worth reporting), the body limit, non-finite numbers, the
-JSON Schema, and last the hand checks for what a schema cannot express:
-shapes (convexity, degeneracy), duplicate and dangling names, the solver and
-its declared settings.  Hand checks skip any part the schema already
+Order of checks: format and version (if the data is not a version-1 scene,
+nothing else is worth reporting), the body limit, the values themselves
+(nesting depth, numbers that are no finite float, repeated keys, text that
+is not valid Unicode), the JSON Schema, and last the hand checks for what a
+schema cannot express: shapes (convexity, degeneracy, size), masses the
+solver can represent, duplicate and dangling names, the solver and its
+declared settings.  Each later check skips any part an earlier one
 rejected, so one mistake is reported once.
 """
 from __future__ import annotations
 
+import itertools
 import json
-import re
+import math
 
 from jsonschema import Draft202012Validator
 
 from .. import solvers
-from ..errors import SceneError
 from ..geometry.shapes import Circle, Polygon
+from ..validate import checked_density
 from . import schema as fmt
-from .json_io import NonFinite
+from .json_io import Duplicates, NonFinite
+from .problems import finish, preview, quoted, type_name
 
 _VALIDATOR = None
-_IDENT = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
-_TYPE_NAMES = {dict: "an object", list: "an array", str: "a string", bool: "a boolean", type(None): "null",
-               int: "a number", float: "a number", NonFinite: "a non-finite number"}
 
 
 def validator() -> Draft202012Validator:
@@ -34,21 +35,8 @@ def validator() -> Draft202012Validator:
     return _VALIDATOR
 
 
-def json_path(parts) -> str:
-    """('bodies', 12, 'shape', 'polygon') -> 'bodies[12].shape.polygon'."""
-    out = ""
-    for p in parts:
-        if isinstance(p, int):
-            out += f"[{p}]"
-        elif _IDENT.match(p):
-            out += f".{p}" if out else p
-        else:
-            out += f"[{json.dumps(p)}]"
-    return out or "$"
-
-
 class Rejected:
-    """Paths the schema (or the NaN scan) already rejected; hand checks skip anything overlapping them."""
+    """Paths an earlier check already rejected; later checks skip anything overlapping them."""
 
     def __init__(self, paths):
         self.paths = set(paths)
@@ -59,16 +47,16 @@ class Rejected:
         return path in self.prefixes or any(path[:k] in self.paths for k in range(len(path)))
 
 
-# -- format, limits, non-finite numbers -------------------------------------
+# -- format, limits, the values themselves -------------------------------------
 def header_problems(data) -> list:
     if not isinstance(data, dict):
-        return [((), f"a scene is a JSON object, got {_TYPE_NAMES.get(type(data), type(data).__name__)}")]
+        return [((), f"a scene is a JSON object, got {type_name(data)}")]
     out = []
     if data.get("format") != fmt.FORMAT:
-        got = "missing" if "format" not in data else f"got {data['format']!r}"
+        got = "missing" if "format" not in data else f"got {preview(data['format'])}"
         out.append((("format",), f"not a Stelkropp scene: expected \"format\": \"{fmt.FORMAT}\" ({got})"))
     if data.get("version") != fmt.VERSION or isinstance(data.get("version"), bool):
-        got = "missing" if "version" not in data else f"got {data['version']!r}"
+        got = "missing" if "version" not in data else f"got {preview(data['version'])}"
         out.append((("version",), f"unsupported version ({got}); this build reads version {fmt.VERSION}"))
     return out
 
@@ -80,24 +68,72 @@ def count_problem(data):
     return None
 
 
-def nonfinite_problems(data, path=()) -> list:
-    if isinstance(data, NonFinite):
-        return [(path, f"{data.text} is not allowed: numbers must be finite")]
-    if isinstance(data, dict):
-        return [p for k, v in data.items() for p in nonfinite_problems(v, path + (k,))]
-    if isinstance(data, list):
-        return [p for i, v in enumerate(data) for p in nonfinite_problems(v, path + (i,))]
-    return []
+def value_problems(data) -> tuple:
+    """Values no scene may hold, wherever they are: nesting deeper than MAX_DEPTH, numbers that
+    are no finite float, keys given twice in one object, strings that are not valid Unicode.
+    Walked with an explicit stack, so hostile nesting cannot exhaust Python's recursion.
+    Returns (problems, too_deep)."""
+    out, stack, too_deep = [], [((), data)], False
+    while stack and len(out) <= fmt.MAX_PROBLEMS:
+        path, v = stack.pop()
+        if isinstance(v, (dict, list)) and len(path) >= fmt.MAX_DEPTH:
+            out.append((path, f"nested more than {fmt.MAX_DEPTH} levels deep (a scene needs 6)"))
+            too_deep = True
+        elif isinstance(v, dict):
+            if isinstance(v, Duplicates):
+                out += [(path + (k,), "duplicate key: this object gives it more than once") for k in v.repeated]
+            for k, item in v.items():
+                if not isinstance(k, str):
+                    out.append((path + (k,), f"keys must be strings, got {type_name(k)}"))
+                elif not _valid_text(k):
+                    out.append((path + (k,), "key is not valid Unicode (it holds a lone surrogate)"))
+                else:
+                    stack.append((path + (k,), item))
+        elif isinstance(v, list):
+            stack += [(path + (i,), item) for i, item in enumerate(v)]
+        else:
+            reason = _value_reason(v)
+            if reason:
+                out.append((path, reason))
+    return out, too_deep
+
+
+def _value_reason(v):
+    if isinstance(v, NonFinite):
+        return v.reason
+    if isinstance(v, float) and not math.isfinite(v):
+        return f"{v} is not allowed: numbers must be finite"
+    if isinstance(v, int) and not isinstance(v, bool) and v.bit_length() > 1000:
+        try:
+            float(v)
+        except OverflowError:
+            digits = int(v.bit_length() * math.log10(2)) + 1
+            return f"an integer of about {digits} digits is beyond the range of a float (about 1.8e308)"
+    if isinstance(v, str) and not _valid_text(v):
+        return "not valid Unicode: holds a lone surrogate (an unpaired \\ud800-\\udfff escape)"
+    return None
+
+
+def _valid_text(s: str) -> bool:
+    if s.isascii():
+        return True
+    try:
+        s.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
 
 
 # -- the schema -----------------------------------------------------------
-def schema_problems(data, nonfinite: Rejected) -> list:
+def schema_problems(data, rejected: Rejected) -> list:
     out = []
     for err in validator().iter_errors(data):
         path = tuple(err.absolute_path)
-        if isinstance(err.instance, NonFinite) or path in nonfinite:
+        if isinstance(err.instance, NonFinite) or path in rejected:
             continue
         out += _explain(err, path)
+        if len(out) > fmt.MAX_PROBLEMS:  # the rest would not be listed
+            break
     return out
 
 
@@ -108,21 +144,20 @@ def _explain(err, path):
         return [(path + (k,), "required field is missing") for k in val if k not in inst]
     if v == "additionalProperties":
         allowed = list(err.schema.get("properties", {}))
-        return [(path + (k,), f"unknown key (allowed: {', '.join(allowed)})")
-                for k in inst if k not in allowed]
+        unknown = itertools.islice((k for k in inst if k not in allowed), fmt.MAX_PROBLEMS + 1)
+        return [(path + (k,), f"unknown key (allowed: {', '.join(allowed)})") for k in unknown]
     if v in ("minProperties", "maxProperties") and path[-1:] == ("shape",):
         return [(path, f"give exactly one of {', '.join(fmt.SCHEMA['$defs']['shape']['properties'])}")]
     if v == "type":
         want = [val] if isinstance(val, str) else val
-        return [(path, f"expected {' or '.join(_article(t) for t in want)}, got "
-                       f"{_TYPE_NAMES.get(type(inst), type(inst).__name__)} {_short(inst)}")]
+        return [(path, f"expected {' or '.join(_article(t) for t in want)}, got {type_name(inst)} {preview(inst)}")]
     if v == "enum":
-        return [(path, f"must be one of {', '.join(map(str, val))}; got {_short(inst)}")]
+        return [(path, f"must be one of {', '.join(map(str, val))}; got {preview(inst)}")]
     if v == "const":
-        return [(path, f"must be {json.dumps(val)}; got {_short(inst)}")]
+        return [(path, f"must be {json.dumps(val)}; got {preview(inst)}")]
     bounds = {"minimum": ">=", "maximum": "<=", "exclusiveMinimum": ">", "exclusiveMaximum": "<"}
     if v in bounds:
-        return [(path, f"must be {bounds[v]} {val}; got {_short(inst)}")]
+        return [(path, f"must be {bounds[v]} {val}; got {preview(inst)}")]
     if v in ("minItems", "maxItems"):
         return [(path, f"has {len(inst)} item{'s' if len(inst) != 1 else ''}; needs "
                        f"{'at least' if v == 'minItems' else 'at most'} {val}")]
@@ -130,16 +165,11 @@ def _explain(err, path):
         return [(path, f"has {len(inst)} items; expected {len(err.schema.get('prefixItems', []))}")]
     if v == "minLength":
         return [(path, "must not be empty")]
-    return [(path, err.message)]
+    return [(path, f"{v}: {val!r} does not hold for {preview(inst)}")]
 
 
 def _article(t):
     return {"object": "an object", "array": "an array", "integer": "an integer", "null": "null"}.get(t, f"a {t}")
-
-
-def _short(x):
-    s = json.dumps(x) if not isinstance(x, NonFinite) else x.text
-    return s if len(s) <= 60 else s[:57] + "..."
 
 
 # -- hand checks ----------------------------------------------------------
@@ -157,18 +187,27 @@ def make_shape(spec):
     return Circle(val)
 
 
-def shape_problems(bodies, bad: Rejected):
-    """(problems, shapes): shapes[i] is the built shape of body i, or None if it was not built."""
+def body_problems(bodies, bad: Rejected):
+    """(problems, shapes): each body's shape built (shapes[i], or None if it was not), then the mass
+    and inertia its density gives it, which must be representable.  (Its centre of mass cannot
+    overflow: shape coordinates are at most shapes.MAX_COORDINATE, far below a float's last ulp.)"""
     out, shapes = [], []
     for i, b in enumerate(bodies):
-        path = ("bodies", i, "shape")
+        path = ("bodies", i)
         shapes.append(None)
-        if path in bad or not isinstance(b, dict) or "shape" not in b:
+        if (*path, "shape") in bad or not isinstance(b, dict) or "shape" not in b:
             continue
         try:
-            shapes[i] = make_shape(b["shape"])
+            shapes[i] = shape = make_shape(b["shape"])
         except ValueError as exc:
-            out.append((path + (next(iter(b["shape"])),), str(exc)))
+            out.append(((*path, "shape", next(iter(b["shape"]))), str(exc)))
+            continue
+        density = b.get("density", fmt.BODY_DEFAULTS["density"])
+        if (*path, "density") not in bad:
+            try:
+                checked_density(density, shape)
+            except ValueError as exc:
+                out.append(((*path, "density"), str(exc).removeprefix("density: ")))
     return out, shapes
 
 
@@ -179,7 +218,8 @@ def name_problems(items, what: str, section: str, bad: Rejected) -> list:
         if not isinstance(name, str) or (section, i, "name") in bad:
             continue
         if name in first:
-            out.append(((section, i, "name"), f"duplicate {what} name {name!r} (first used by {section}[{first[name]}])"))
+            out.append(((section, i, "name"),
+                        f"duplicate {what} name {quoted(name)} (first used by {section}[{first[name]}])"))
         else:
             first[name] = i
     return out
@@ -194,7 +234,7 @@ def spring_problems(bodies, springs, bad: Rejected) -> list:
         for end in ("a", "b"):
             ref = sp.get(end)
             if isinstance(ref, str) and ref and ("springs", i, end) not in bad and ref not in names:
-                out.append((("springs", i, end), f"no body named {ref!r}"))
+                out.append((("springs", i, end), f"no body named {quoted(ref)}"))
         if isinstance(sp.get("a"), str) and sp.get("a") == sp.get("b"):
             out.append((("springs", i, "b"), "a spring needs two different bodies (or null for a world point)"))
     return out
@@ -207,7 +247,7 @@ def solver_problems(world: dict, bad: Rejected) -> list:
     try:
         mode = solvers.get(name)
     except ValueError:
-        return [(("world", "solver"), f"unknown solver {name!r}; this build has: {', '.join(solvers.available())}")]
+        return [(("world", "solver"), f"unknown solver {quoted(name)}; this build has: {', '.join(solvers.available())}")]
     except ImportError as exc:
         return [(("world", "solver"), f"solver {name!r} is not available in this build ({exc})")]
     settings = world.get("settings", {})
@@ -219,7 +259,7 @@ def solver_problems(world: dict, bad: Rejected) -> list:
         if path in bad:
             continue
         if key not in mode.settings:
-            out.append((path, f"solver {name!r} has no setting {key!r}; it has: {', '.join(mode.settings)}"))
+            out.append((path, f"solver {name!r} has no setting {quoted(key)}; it has: {', '.join(mode.settings)}"))
             continue
         try:
             mode.settings[key].coerce(value)
@@ -233,7 +273,7 @@ def hand_problems(data, bad: Rejected):
     bodies = data.get("bodies") if isinstance(data.get("bodies"), list) else []
     springs = data.get("springs") if isinstance(data.get("springs"), list) else []
     world = data.get("world") if isinstance(data.get("world"), dict) else {}
-    out, shapes = shape_problems(bodies, bad)
+    out, shapes = body_problems(bodies, bad)
     out += name_problems(bodies, "body", "bodies", bad)
     out += name_problems(springs, "spring", "springs", bad)
     out += spring_problems(bodies, springs, bad)
@@ -242,37 +282,17 @@ def hand_problems(data, bad: Rejected):
 
 
 def check(data):
-    """(problems, shapes) for scene data; problems are (json_path_string, reason) in document order."""
+    """(problems, shapes) for scene data; problems are (json_path_string, reason) in document order,
+    at most schema.MAX_PROBLEMS + 1 of them."""
     problems = header_problems(data)
     if problems:
-        return _finish(problems), []
+        return finish(problems), []
     too_many = count_problem(data)
     if too_many:
-        return _finish([too_many]), []
-    problems = nonfinite_problems(data)
+        return finish([too_many]), []
+    problems, too_deep = value_problems(data)
+    if too_deep:
+        return finish(problems), []  # the schema and hand checks recurse; never give them deep data
     problems += schema_problems(data, Rejected(p for p, _ in problems))
     more, shapes = hand_problems(data, Rejected(p for p, _ in problems))
-    return _finish(problems + more), shapes
-
-
-def scene_error(source, problems) -> SceneError:
-    """One SceneError for ``problems`` [(json_path, reason)]: names ``source``, lists each."""
-    n = len(problems)
-    lines = [f"{source}: {n} problem{'s' if n != 1 else ''} in scene"]
-    lines += [f"  {p}: {r}" for p, r in problems]
-    return SceneError("\n".join(lines), problems=problems, path=source)
-
-
-def _finish(problems):
-    seen, out = set(), []
-    for path, reason in sorted(problems, key=lambda p: _sort_key(p[0])):
-        item = (json_path(path), reason)
-        if item not in seen:
-            seen.add(item)
-            out.append(item)
-    return out
-
-
-def _sort_key(path):
-    # ints before strings at the same depth would be arbitrary; compare as (type, value) pairs
-    return tuple((0, p, "") if isinstance(p, int) else (1, 0, p) for p in path)
+    return finish(problems + more), shapes

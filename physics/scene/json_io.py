@@ -1,28 +1,45 @@
-"""Strict, bounded JSON in and atomic JSON out for scene files.
+"""Strict, bounded JSON in and canonical JSON text out for scene files.
 
-Python's json module accepts NaN, Infinity and overflowing literals such as
-1e400 (which become inf); scene files must not, so non-finite numbers parse
-to a marker that the checks report with its JSON path.  Nothing here ever
-evaluates or unpickles anything.
+Python's json module accepts NaN, Infinity, overflowing literals such as
+1e400 (which become inf), integers of any length, and repeated keys (the
+last one wins).  Scene files must not: numbers that are not finite floats
+parse to a ``NonFinite`` marker and objects that repeat a key to a
+``Duplicates`` dict, and the checks report each with its JSON path, so one
+pass lists them all.  Nothing here ever evaluates or unpickles anything.
 """
 from __future__ import annotations
 
 import json
 import math
 import os
-import tempfile
 
 
 class NonFinite:
-    """Stands in for a NaN/Infinity literal so parsing continues and every one is reported."""
+    """Stands in for a number that is no finite float (NaN, Infinity, 1e400, a 400-digit
+    integer) so parsing continues and every one is reported; ``text`` is the literal, shortened."""
 
-    __slots__ = ("text",)
+    __slots__ = ("text", "integer")
 
-    def __init__(self, text: str):
-        self.text = text
+    def __init__(self, text: str, integer: bool = False):
+        self.text = text if len(text) <= 40 else f"{text[:12]}...{text[-6:]} ({len(text)} characters)"
+        self.integer = integer
+
+    @property
+    def reason(self) -> str:
+        """Why the number is refused, for the problem list."""
+        if self.integer:
+            return f"{self.text} is beyond the range of a float (about 1.8e308)"
+        return f"{self.text} is not allowed: numbers must be finite"
 
     def __repr__(self):
         return self.text
+
+
+class Duplicates(dict):
+    """A JSON object that gives a key more than once: the last value of each key, plus
+    ``repeated``, the keys given more than once (the checks report each with its path)."""
+
+    __slots__ = ("repeated",)
 
 
 def _float(text: str):
@@ -30,9 +47,39 @@ def _float(text: str):
     return x if math.isfinite(x) else NonFinite(text)
 
 
+def _int(text: str):
+    # more than 309 digits is beyond the largest float (and past 4300 Python refuses to convert)
+    if len(text) > 310:
+        return NonFinite(text, integer=True)
+    v = int(text)
+    try:
+        float(v)
+    except OverflowError:
+        return NonFinite(text, integer=True)
+    return v
+
+
+def _object(pairs):
+    d = dict(pairs)
+    if len(d) == len(pairs):
+        return d
+    out = Duplicates(d)
+    seen, out.repeated = set(), []
+    for key, _ in pairs:
+        if key in seen and key not in out.repeated:
+            out.repeated.append(key)
+        seen.add(key)
+    return out
+
+
 def parse(text: str):
-    """json.loads that turns NaN, Infinity and overflowing numbers into NonFinite markers."""
-    return json.loads(text, parse_constant=NonFinite, parse_float=_float)
+    """json.loads, strictly: NaN, Infinity and numbers beyond float range become NonFinite,
+    objects with a repeated key Duplicates; ValueError for invalid or too deeply nested JSON."""
+    try:
+        return json.loads(text, parse_constant=NonFinite, parse_float=_float, parse_int=_int,
+                          object_pairs_hook=_object)
+    except RecursionError:  # json's C scanner recurses once per level (about 1000 allowed)
+        raise ValueError("nested too deeply for a scene file") from None
 
 
 def read_text(path, max_bytes: int) -> str:
@@ -62,32 +109,3 @@ def dumps(data) -> str:
             lines.append(f"  {json.dumps(key)}: {json.dumps(value, allow_nan=False)}{comma}")
     lines.append("}")
     return "\n".join(lines) + "\n"
-
-
-def write_atomic(path, text: str) -> None:
-    """Write to a temporary file in the same directory, then rename over ``path``.
-
-    A crash leaves either the old file or the new one, never half of either;
-    fsync makes the rename durable on filesystems that reorder writes.
-    """
-    path = os.fspath(path)
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".", suffix=".tmp", dir=folder)
-    try:
-        # mkstemp makes the file private (0600); a scene should keep the old file's mode
-        try:
-            mode = os.stat(path).st_mode & 0o777
-        except FileNotFoundError:
-            mode = 0o644
-        os.chmod(tmp, mode)
-        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as f:
-            f.write(text)
-            f.flush()
-            os.fsync(f.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise

@@ -6,11 +6,13 @@ all of them and never half-builds a world.
 """
 from __future__ import annotations
 
+import math
 import os
 
 from . import schema as fmt
-from .checks import check, scene_error
+from .checks import check
 from .json_io import parse, read_text
+from .problems import scene_error
 
 
 def read_scene(path) -> dict:
@@ -76,6 +78,10 @@ def _add_spring(world, sp, by_name, path, source):
     kw = {**fmt.SPRING_DEFAULTS, **{k: v for k, v in sp.items() if k not in ("a", "b")}}
     b = None if sp["b"] is None else by_name[sp["b"]]
     try:
-        return world.add_spring(by_name[sp["a"]], b, **kw)
+        spring = world.add_spring(by_name[sp["a"]], b, **kw)
     except ValueError as exc:
         raise scene_error(source, [(path, str(exc))]) from None
+    if not math.isfinite(spring.rest_length):  # the default, the anchors' distance, can overflow
+        raise scene_error(source, [(f"{path}.rest_length", "the anchors are too far apart for a float "
+                                    "(the default rest length overflows); give rest_length")])
+    return spring

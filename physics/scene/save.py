@@ -6,7 +6,8 @@ This module must not import ``physics.world`` (or anything that does):
 from __future__ import annotations
 
 from .dump import to_dict
-from .json_io import dumps, write_atomic
+from .atomic import write_atomic
+from .json_io import dumps
 
 
 def scene_metadata(world) -> dict:

@@ -21,6 +21,10 @@ SCHEMA_FILE = "stelkropp.schema.json"
 # refuse before parsing / before validating, so a hostile file cannot eat the machine
 MAX_FILE_BYTES = 50 * 1024 * 1024
 MAX_BODIES = 1_000_000
+# the format nests 6 deep (bodies[i].shape.polygon[j][k]); deeper data is refused before the schema
+MAX_DEPTH = 32
+# a SceneError lists at most this many problems (a hostile file can have millions)
+MAX_PROBLEMS = 100
 
 # the World's own choices, from the one list of names (physics/options.py)
 SOLVERS = list(options.SOLVERS)
