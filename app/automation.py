@@ -68,6 +68,8 @@ def status(app) -> dict:
         "bound": {"lo": app.bound.lo.tolist(), "hi": app.bound.hi.tolist(), "enabled": app.bound.enabled,
                   "shown": app.bound.shown},
         "plots": [p.last for p in app.panels.stats.plots] if app.panels.show_stats else [],
+        "compare": app.compare.describe(),
+        "compare_plots": [p.last for p in app.panels.stats.compare.plots] if app.compare.active else [],
     }
 
 

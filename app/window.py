@@ -17,6 +17,8 @@ from .autosave import Autosaver
 from .bound import WorldBound
 from .camera import Camera
 from .commands import RemoveBodies
+from .compare import Comparison
+from .compare_view import CompareView
 from .editor import Editor
 from .files import SceneFiles
 from .input import SceneInput
@@ -76,6 +78,8 @@ class Sandbox(pyglet.window.Window):
         self.autosaver = Autosaver(interval=autosave_interval)
         self.files = SceneFiles(self.editor, self.autosaver, lambda *a: self.panels.ask(*a))
         self.files.errors = errors
+        self.compare = Comparison(self)           # live solver comparison (off until started)
+        self.compare_view = CompareView(self)
         crash = self.autosaver.previous_crash() if offer_autosave else None
         self.autosaver.begin_session(path)
         self.panels = Panels(self, imgui_ctx)
@@ -149,12 +153,15 @@ class Sandbox(pyglet.window.Window):
             phys_ms, steps = self.sim.advance(real_dt, velocities=self.overlays.velocities)
             rd = self.check_bound() if steps else None
             self.sampler.sample(self.world, phys_ms, steps, self.frame_no, len(self.rd_ids))
+            t_cmp = time.perf_counter()
+            self.compare.update(phys_ms, steps)
+            phys_ms += (time.perf_counter() - t_cmp) * 1e3
             self.input.update_hover()
             upload_ms = self.build_scene(rd)
         t_draw = time.perf_counter()
         fw, fh = self.get_framebuffer_size()
         if ready:
-            self.renderer.draw(self.camera, fw, fh)
+            self.compare_view.draw(fw, fh)
         else:
             GL.glViewport(0, 0, fw, fh)
             GL.glClearColor(0.06, 0.07, 0.095, 1.0)
@@ -220,6 +227,7 @@ class Sandbox(pyglet.window.Window):
             if (decor.hidden_springs or decor.selected_springs) else None
         if np.all(np.isfinite(rd.vertices)) and np.all(np.isfinite(rd.center)):
             self.renderer.build(rd, self.camera, self.overlays, decor, spring_ids, quadtree, velocities)
+        self.compare_view.build()
         return self.renderer.last_upload_ms
 
     def _quadtree_failed(self, exc):
@@ -230,6 +238,8 @@ class Sandbox(pyglet.window.Window):
         imgui.new_frame()
         if self.show_ui or not ready:
             self.panels.draw()
+        if ready:
+            self.compare_view.labels()
         if self.sim.compiling_note and ready:
             overlay_note(self, self.sim.compiling_note)
         imgui.render()

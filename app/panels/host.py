@@ -5,6 +5,7 @@ from __future__ import annotations
 from imgui_bundle import imgui
 
 from .base import record_window
+from .compare import CompareSection
 from .dialogs import Dialogs
 from .hits import PanelHits
 from .inspector import InspectorSection
@@ -18,7 +19,8 @@ from .tools import ToolsSection
 from .view import ViewSection
 
 #: the side panel's sections, top to bottom (add a new section here)
-SECTIONS = (SimulationSection, ToolsSection, InspectorSection, SolverSection, SceneSection, ViewSection)
+SECTIONS = (SimulationSection, CompareSection, ToolsSection, InspectorSection, SolverSection, SceneSection,
+            ViewSection)
 
 
 class Panels:

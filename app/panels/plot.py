@@ -8,6 +8,8 @@ import numpy as np
 from imgui_bundle import imgui, implot
 
 TICK_PX = 28.0      # at least this many pixels between y tick labels (the font is 13 px high)
+MIN_PLOT_H = 150.0   # rows of plots are at least this high (px)
+MIN_PLOT_W = 170.0
 MAX_POINTS = 120    # points per line: llvmpipe pays for every plotted segment
 
 
@@ -38,26 +40,41 @@ def readout(t, series, x):
     return float(t[i]), {label: float(np.asarray(y)[i]) for label, y in series}
 
 
+def grid(n, width, height):
+    """(columns, rows) for ``n`` plots in a width x height area: as many rows as fit at
+    MIN_PLOT_H, the fewest columns that hold them all."""
+    rows = max(1, min(n, int(height // MIN_PLOT_H)))
+    cols = math.ceil(n / rows)
+    while cols > 1 and width / cols < MIN_PLOT_W and rows < n:
+        rows += 1
+        cols = math.ceil(n / rows)
+    return cols, math.ceil(n / cols)
+
+
 class TimePlot:
     """Draws one plot; ``last`` describes it after drawing (for the status file and tests):
     frame rectangle, number of y ticks and their spacing in pixels, hover readout."""
 
-    def __init__(self, title, unit):
+    def __init__(self, title, unit, key="stats"):
         self.title = title
         self.unit = unit
+        self.key = key          # imgui id suffix: plots of the same title in other windows differ
         self.last: dict = {}
 
-    def draw(self, t, series, width, height):
-        """``t``: sample times (s, the newest 0); ``series``: [(label, values)]."""
+    def draw(self, t, series, width, height, colors=None):
+        """``t``: sample times (s, the newest 0); ``series``: [(label, values)] (NaN: no value
+        then); ``colors``: one RGBA per series, or None for implot's own."""
         flags = (implot.Flags_.no_mouse_text | implot.Flags_.no_menus | implot.Flags_.no_box_select).value
         if len(series) == 1:
             flags |= implot.Flags_.no_legend.value
         ys = [np.asarray(y, dtype=np.float64) for _, y in series]
-        lo, hi = min(float(y.min()) for y in ys), max(float(y.max()) for y in ys)
+        finite = [y[np.isfinite(y)] for y in ys]
+        finite = [y for y in finite if len(y)] or [np.zeros(1)]
+        lo, hi = min(float(y.min()) for y in finite), max(float(y.max()) for y in finite)
         area_h = max(20.0, height - 46.0)          # the frame minus the title and the time axis
         ticks = nice_ticks(lo, hi, int(area_h // TICK_PX) + 1)
         self.last = {"title": self.title, "ticks": len(ticks), "tick_px": area_h / max(1, len(ticks) - 1)}
-        if not implot.begin_plot(f"{self.title}##stats", imgui.ImVec2(width, height), flags):
+        if not implot.begin_plot(f"{self.title}##{self.key}", imgui.ImVec2(width, height), flags):
             return
         implot.setup_axes("time (s)", "", 0, 0)
         implot.setup_axis_limits(implot.ImAxis_.x1.value, float(t[0]), 0.0, implot.Cond_.always.value)
@@ -69,8 +86,11 @@ class TimePlot:
                                 (implot.LegendFlags_.outside | implot.LegendFlags_.horizontal).value)
         k = max(1, len(t) // MAX_POINTS)
         tx = np.ascontiguousarray(t[::k], dtype=np.float64)
-        for (label, _), y in zip(series, ys):
-            implot.plot_line(label, tx, np.ascontiguousarray(y[::k]))
+        for i, ((label, _), y) in enumerate(zip(series, ys)):
+            spec = implot.Spec()
+            if colors is not None:
+                spec.line_color = imgui.ImVec4(*colors[i])
+            implot.plot_line(label, tx, np.ascontiguousarray(y[::k]), spec=spec)
         pos, size = implot.get_plot_pos(), implot.get_plot_size()
         self.last["rect"] = (pos.x, pos.y, pos.x + size.x, pos.y + size.y)
         if implot.is_plot_hovered():

@@ -2,33 +2,18 @@
 a grid that fills the window (drag its edges to resize it)."""
 from __future__ import annotations
 
-import math
-
 from imgui_bundle import imgui
 
 from .base import record_window
-from .plot import TimePlot
+from .compare_plots import ComparePlots
+from .plot import TimePlot, grid
 from .style import DIM, PANEL_W, STATS_H
-
-MIN_PLOT_H = 150.0   # rows of plots are at least this high (px)
-MIN_PLOT_W = 170.0
 
 
 def stats_default_rect(width, height):
     """The stats window's first place: a strip along the bottom, right of the side panel, so
     the scene keeps a wide free area above it (x0, y0, x1, y1; y down)."""
     return (PANEL_W + 16.0, height - 8.0 - STATS_H, width - 8.0, height - 8.0)
-
-
-def grid(n, width, height):
-    """(columns, rows) for ``n`` plots in a width x height area: as many rows as fit at
-    MIN_PLOT_H, the fewest columns that hold them all."""
-    rows = max(1, min(n, int(height // MIN_PLOT_H)))
-    cols = math.ceil(n / rows)
-    while cols > 1 and width / cols < MIN_PLOT_W and rows < n:
-        rows += 1
-        cols = math.ceil(n / rows)
-    return cols, math.ceil(n / cols)
 
 
 class StatsWindow:
@@ -43,6 +28,8 @@ class StatsWindow:
     def __init__(self, app):
         self.app = app
         self.plots = [TimePlot(title, unit) for title, unit, _ in self.SERIES]
+        self.compare = ComparePlots(app)
+        self.show_compare = False      # the next frame selects the Compare tab (set on start)
 
     def draw(self):
         app = self.app
@@ -53,10 +40,25 @@ class StatsWindow:
         imgui.set_next_window_size_constraints(imgui.ImVec2(260, 160), imgui.ImVec2(1e5, 1e5))
         imgui.set_next_window_bg_alpha(0.82)
         expanded, _ = imgui.begin("Stats###stats", None)
-        if expanded:
+        if expanded and app.compare.active:
+            self.tabs()
+        elif expanded:
             self.contents()
         record_window(app, "stats_window")
         imgui.end()
+
+    def tabs(self):
+        """While comparing: a Compare tab (selected when the comparison starts) beside the stats."""
+        if imgui.begin_tab_bar("stats_tabs"):
+            flags = imgui.TabItemFlags_.set_selected.value if self.show_compare else 0
+            self.show_compare = False
+            if imgui.begin_tab_item("Compare", None, flags)[0]:
+                self.compare.draw()
+                imgui.end_tab_item()
+            if imgui.begin_tab_item("Stats")[0]:
+                self.contents()
+                imgui.end_tab_item()
+            imgui.end_tab_bar()
 
     def contents(self):
         app = self.app

@@ -17,6 +17,7 @@ from .colors import (AABB_COLOR, COM_COLOR, COM_EDGE, CONTACT_COLOR, DYNAMIC_FIL
                      SLEEP_FILL, SLEEP_LINE, SPRING_COLOR, SPRING_SELECTED, STATIC_FILL, STATIC_LINE,
                      VEL_COLOR)
 from .decor import Decor, Overlays
+from .fans import Fans
 from .geometry import arrows, coils, discs, grid_lines, rects, thick_segments
 from .gl import Layer, load_program
 
@@ -34,8 +35,7 @@ class Renderer:
         self.circles = Layer(self.prog_circle, [2, 2, 1, 1, 4, 4])
         self.lines = Layer(self.prog_line, [2, 1, 4])
         self.markers = Layer(self.prog_circle, [2, 2, 1, 1, 4, 4])
-        self._topo_key = None
-        self._edge_body = self._ia = self._ib = None
+        self.fans = Fans()
         self.outline_px = 1.6
         self.uniforms = {}
         self.last_upload_ms = 0.0
@@ -48,20 +48,6 @@ class Renderer:
         return self.uniforms[key]
 
     # -- geometry ------------------------------------------------------------
-    def _topology(self, vstart, vcount):
-        poly = np.nonzero(vcount >= 3)[0]
-        key = (len(vcount), poly.tobytes(), vstart[poly].tobytes(), vcount[poly].tobytes())
-        if key != self._topo_key:
-            counts = vcount[poly].astype(np.int64)
-            edge_body = np.repeat(poly, counts)
-            starts = np.repeat(np.cumsum(counts) - counts, counts)
-            k = np.arange(counts.sum()) - starts
-            cnt = np.repeat(counts, counts)
-            base = np.repeat(vstart[poly].astype(np.int64), counts)
-            self._edge_body, self._ia, self._ib = edge_body, base + k, base + (k + 1) % np.maximum(cnt, 1)
-            self._topo_key = key
-        return self._edge_body, self._ia, self._ib
-
     @staticmethod
     def body_colors(rd, decor: Decor):
         n = len(rd.kind)
@@ -101,26 +87,8 @@ class Renderer:
         self.last_upload_ms = (time.perf_counter() - t0) * 1e3
 
     def polygon_fans(self, rd, fill, line):
-        """Polygons as a fan of (centre, v_i, v_i+1) per edge; the centre vertex carries its
-        distance to the edge so the shader can draw the outline."""
-        eb, ia, ib = self._topology(rd.vstart, rd.vcount)
-        if not len(eb):
-            return np.zeros((0, 11), F32)
-        V = rd.vertices
-        c, a, b = rd.center[eb], V[ia], V[ib]
-        e = b - a
-        el = np.hypot(e[:, 0], e[:, 1])
-        el[el == 0] = 1.0
-        dist = np.abs(e[:, 0] * (c[:, 1] - a[:, 1]) - e[:, 1] * (c[:, 0] - a[:, 0])) / el
-        pv = np.empty((len(eb), 3, 11), F32)
-        pv[:, 0, 0:2] = c
-        pv[:, 1, 0:2] = a
-        pv[:, 2, 0:2] = b
-        pv[:, 0, 2] = dist
-        pv[:, 1:, 2] = 0.0
-        pv[:, :, 3:7] = fill[eb][:, None, :]
-        pv[:, :, 7:11] = line[eb][:, None, :]
-        return pv.reshape(-1, 11)
+        """The polygon bodies' fans (see :class:`app.render.fans.Fans`)."""
+        return self.fans.build(rd, fill, line)
 
     @staticmethod
     def line_layer(rd, scale, overlays, decor, spring_ids, quadtree, velocities):
@@ -174,19 +142,34 @@ class Renderer:
         return np.concatenate(mk) if mk else np.zeros((0, 14), F32)
 
     # -- drawing -------------------------------------------------------------
-    def draw(self, camera, width_px: int, height_px: int, clear=True):
+    def draw(self, camera, width_px: int, height_px: int, clear=True, extra=(), scissor=None, scene=True):
+        """Draw the grid, the scene's layers (unless ``scene`` is False) with ``camera``, then
+        ``extra`` layers (comparison lanes).  ``scissor``: (x, y, w, h) framebuffer pixels (y up)
+        to draw into, or None (all)."""
         t0 = time.perf_counter()
         GL.glViewport(0, 0, width_px, height_px)
         GL.glDisable(GL.GL_DEPTH_TEST)
         GL.glDisable(GL.GL_CULL_FACE)
         GL.glEnable(GL.GL_BLEND)
         GL.glBlendFunc(GL.GL_SRC_ALPHA, GL.GL_ONE_MINUS_SRC_ALPHA)
-        # background: a clear and grid lines (a full-screen shader costs ~35 ms on llvmpipe)
-        GL.glClearColor(0.062, 0.072, 0.098, 1.0)
-        GL.glClear(GL.GL_COLOR_BUFFER_BIT)
+        if scissor is not None:
+            GL.glEnable(GL.GL_SCISSOR_TEST)
+            GL.glScissor(*(int(v) for v in scissor))
+        if clear:
+            # background: a clear and grid lines (a full-screen shader costs ~35 ms on llvmpipe)
+            GL.glClearColor(0.062, 0.072, 0.098, 1.0)
+            GL.glClear(GL.GL_COLOR_BUFFER_BIT)
         self.grid.upload(grid_lines(camera))
+        own = (self.polys, self.circles, self.lines, self.markers) if scene else ()
+        self.draw_layers(camera, (self.grid, *own, *extra))
+        if scissor is not None:
+            GL.glDisable(GL.GL_SCISSOR_TEST)
+        self.last_draw_ms = (time.perf_counter() - t0) * 1e3
+
+    def draw_layers(self, camera, layers):
+        """Draw ``layers`` (app.render.gl.Layer) with ``camera``'s view."""
         view = camera.matrix()
-        for layer in (self.grid, self.polys, self.circles, self.lines, self.markers):
+        for layer in layers:
             if not layer.count:
                 continue
             GL.glUseProgram(layer.program)
@@ -197,4 +180,3 @@ class Renderer:
             layer.draw()
         GL.glBindVertexArray(0)
         GL.glUseProgram(0)
-        self.last_draw_ms = (time.perf_counter() - t0) * 1e3

@@ -1,0 +1,85 @@
+"""Drawing a comparison: the rivals as ghost outlines over the scene, or split view (the main
+world in the left half of the free area, the first rival in the right half, the same region of
+the world in both, the camera shared so tools and panning work in the left pane as usual)."""
+from __future__ import annotations
+
+import numpy as np
+from imgui_bundle import imgui
+
+from . import framing
+from .camera import Camera
+from .compare import LANE_COLORS
+from .render.ghost import LaneLayers
+
+DIVIDER = (0.85, 0.88, 0.95, 0.9)
+
+
+class CompareView:
+    """Per-lane vertex layers of ``app.compare`` and the panes of split view."""
+
+    def __init__(self, app):
+        self.app = app
+        self.layers: list[LaneLayers] = []
+
+    def set_view(self, view):
+        """"ghost" or "split" (ValueError otherwise); split view frames the scene in the left pane."""
+        cmp = self.app.compare
+        if view not in cmp.VIEWS:
+            raise ValueError(f"view: choose one of {list(cmp.VIEWS)}, got {view!r}")
+        cmp.view = view
+        if view == "split":
+            app = self.app
+            framing.fit(app.camera, app.bound.content(app.world.render_data()), [self.panes()[0]])
+
+    def split(self) -> bool:
+        cmp = self.app.compare
+        return cmp.active and cmp.view == "split" and bool(cmp.lanes)
+
+    def panes(self):
+        """(left, right) window rectangles (y down) of split view: the free area's halves."""
+        x0, y0, x1, y1 = self.app.free_rect()
+        xm = 0.5 * (x0 + x1)
+        return (x0, y0, xm, y1), (xm, y0, x1, y1)
+
+    def build(self):
+        """Upload every rival's bodies (ghost outlines, or solid in split view's right pane)."""
+        cmp = self.app.compare
+        lanes = cmp.lanes if cmp.active else []
+        while len(self.layers) < len(lanes):
+            self.layers.append(LaneLayers(self.app.renderer))
+        split = self.split()
+        for k, layer in enumerate(self.layers):
+            if k < len(lanes) and (not split or k == 0):
+                layer.build(lanes[k].world.render_data(), lanes[k].color, solid=split)
+            else:
+                layer.clear()
+
+    def draw(self, fw, fh):
+        """Draw the scene and the comparison into the framebuffer (fw x fh pixels)."""
+        app, r = self.app, self.app.renderer
+        if not self.split():
+            extra = [lay for layer in self.layers for lay in layer.layers]
+            r.draw(app.camera, fw, fh, extra=extra)
+            return
+        left, right = self.panes()
+        sx, sy = fw / max(1, app.width), fh / max(1, app.height)
+        xm = right[0]
+        # the main world left of the divider (under the side panel too), the rival right of it
+        r.draw(app.camera, fw, fh, scissor=(0, 0, xm * sx, fh))
+        cam = Camera(app.camera.width, app.camera.height, app.camera.center, app.camera.scale)
+        cam.center = app.camera.center - np.array([(right[0] - left[0]) / cam.scale, 0.0])
+        r.draw(cam, fw, fh, extra=self.layers[0].layers, scissor=(xm * sx, 0, fw - xm * sx, fh), scene=False)
+
+    def labels(self):
+        """The panes' names and the divider (imgui's background list: the panels stay above)."""
+        if not self.split():
+            return
+        app = self.app
+        left, right = self.panes()
+        dl = imgui.get_background_draw_list()
+        dl.add_line(imgui.ImVec2(right[0], right[1]), imgui.ImVec2(right[0], right[3]),
+                    imgui.get_color_u32(imgui.ImVec4(*DIVIDER)), 2.0)
+        lane = app.compare.lanes[0]
+        for (x0, y0, _, _), text, col in ((left, f"main: {app.world.solver}", LANE_COLORS[0]),
+                                          (right, lane.label, lane.color)):
+            dl.add_text(imgui.ImVec2(x0 + 10, y0 + 8), imgui.get_color_u32(imgui.ImVec4(*col)), text)
