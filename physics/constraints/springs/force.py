@@ -55,11 +55,38 @@ def spring_forces(S, ns, X, Q, V, W, F, T):
 
 
 @kernel
+def _geometric_rate(B, S, s):
+    """omega^2 bound of spring s's geometric stiffness at the bodies' state (geometric.py):
+    |T| / L across the axis plus |f . r| / I at each arm (both signs: a negative stiffness
+    diverges as fast as a positive one oscillates)."""
+    a = S.a[s]
+    b = S.b[s]
+    pax, pay, rax, ray = anchor(B.x, B.q, a, S.la[s, 0], S.la[s, 1])
+    inv_m = B.inv_m[a]
+    if b >= 0:
+        pbx, pby, rbx, rby = anchor(B.x, B.q, b, S.lb[s, 0], S.lb[s, 1])
+        inv_m += B.inv_m[b]
+    else:
+        pbx, pby, rbx, rby = S.lb[s, 0], S.lb[s, 1], 0.0, 0.0
+    length = math.hypot(pbx - pax, pby - pay)
+    if length < 1e-12:
+        return 0.0
+    t = abs(S.k[s] * (length - S.rest[s]))
+    ra = math.hypot(rax, ray)
+    rb = math.hypot(rbx, rby)
+    rate = t / length * (inv_m + ra * ra * B.inv_i[a]) + t * ra * B.inv_i[a]
+    if b >= 0:
+        rate += t / length * rb * rb * B.inv_i[b] + t * rb * B.inv_i[b]
+    return rate
+
+
+@kernel
 def spring_rate(B, S, ns):
-    """Largest omega = sqrt(k / m_eff) and damping rate c / m_eff over the springs.
+    """Largest omega = sqrt(k / m_eff), damping rate c / m_eff and geometric omega over the springs.
 
     1/m_eff at an anchor is bounded by 1/m + |r|^2 / I per end (the spring axis
-    may be perpendicular to the arm).
+    may be perpendicular to the arm); the geometric omega is that of the turning
+    axis and arms (_geometric_rate).
     """
     worst = 0.0
     for s in range(ns):
@@ -68,5 +95,5 @@ def spring_rate(B, S, ns):
         b = S.b[s]
         if b >= 0:
             inv += B.inv_m[b] + (S.lb[s, 0] ** 2 + S.lb[s, 1] ** 2) * B.inv_i[b]
-        worst = max(worst, math.sqrt(S.k[s] * inv), S.c[s] * inv)
+        worst = max(worst, math.sqrt(S.k[s] * inv), S.c[s] * inv, math.sqrt(_geometric_rate(B, S, s)))
     return worst
