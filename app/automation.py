@@ -30,6 +30,7 @@ def _bodies(app):
     for b in app.world.bodies:
         sp = app.camera.to_screen(b.position)
         out.append({"id": b.id, "name": b.name, "kind": b.kind, "position": b.position, "angle": b.angle,
+                    "velocity": b.velocity, "angular_velocity": b.angular_velocity,
                     "screen": [float(sp[0]), float(app.height - sp[1])],
                     "shape": b.shape.kind, "density": b.density,
                     "vertices": 0 if isinstance(b.shape, physics.Circle) else len(b.shape.vertices)})
@@ -68,7 +69,7 @@ def status(app) -> dict:
         "bound": {"lo": app.bound.lo.tolist(), "hi": app.bound.hi.tolist(), "enabled": app.bound.enabled,
                   "shown": app.bound.shown},
         "plots": [p.last for p in app.panels.stats.plots] if app.panels.show_stats else [],
-        "compare": app.compare.describe(),
+        "compare": app.compare.describe(), "plot": app.panels.plot.describe(),
         "compare_plots": [p.last for p in app.panels.stats.compare.plots] if app.compare.active else [],
     }
 

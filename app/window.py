@@ -23,6 +23,7 @@ from .editor import Editor
 from .files import SceneFiles
 from .input import SceneInput
 from .notices import Notices
+from .probes import Recorder
 from .panels import Panels, apply_style
 from .panels.notes import overlay_note
 from .render import Overlays, Renderer
@@ -80,6 +81,7 @@ class Sandbox(pyglet.window.Window):
         self.files.errors = errors
         self.compare = Comparison(self)           # live solver comparison (off until started)
         self.compare_view = CompareView(self)
+        self.recorder = Recorder()                # plot anything: the chosen quantities
         crash = self.autosaver.previous_crash() if offer_autosave else None
         self.autosaver.begin_session(path)
         self.panels = Panels(self, imgui_ctx)
@@ -107,6 +109,9 @@ class Sandbox(pyglet.window.Window):
     def _document_changed(self, world, path, keep_camera):
         self.sim.reset()
         self.sampler.clear()
+        self.recorder.clear(keep_series=keep_camera)     # a reset keeps what is plotted
+        if keep_camera:
+            self.recorder.rebind(world, self.editor.refs)
         self._scene_pending = "reset" if keep_camera else "new"
         self.autosaver.set_origin(path)
         self._mode_changed(world.solver, world.integrator)
@@ -155,6 +160,7 @@ class Sandbox(pyglet.window.Window):
             self.sampler.sample(self.world, phys_ms, steps, self.frame_no, len(self.rd_ids))
             t_cmp = time.perf_counter()
             self.compare.update(phys_ms, steps)
+            self.recorder.sample(self.world)
             phys_ms += (time.perf_counter() - t_cmp) * 1e3
             self.input.update_hover()
             upload_ms = self.build_scene(rd)

@@ -9,6 +9,7 @@ from .compare import CompareSection
 from .dialogs import Dialogs
 from .hits import PanelHits
 from .inspector import InspectorSection
+from .plot_tab import PlotTab
 from .notes import cursor_hint, messages, progress_window
 from .scene import SceneSection
 from .simulation import SimulationSection
@@ -34,6 +35,7 @@ class Panels:
         self.tools = next(s for s in self.sections if isinstance(s, ToolsSection))
         self.scene = next(s for s in self.sections if isinstance(s, SceneSection))
         self.stats = StatsWindow(app)
+        self.plot = PlotTab(app)
         self.dialogs = Dialogs(app)
         self.show_stats = True
 

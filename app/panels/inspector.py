@@ -8,6 +8,7 @@ from imgui_bundle import imgui
 import physics
 
 from .base import Section, record
+from .plot_tab import probe_checkboxes
 from .style import DIM, ENTER, RED
 
 
@@ -32,6 +33,7 @@ class InspectorSection(Section):
             self.body(item)
         else:
             self.spring(item)
+        probe_checkboxes(app, item)
         if ed.edit_error:
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(RED, ed.edit_error)

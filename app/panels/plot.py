@@ -59,13 +59,15 @@ class TimePlot:
         self.title = title
         self.unit = unit
         self.key = key          # imgui id suffix: plots of the same title in other windows differ
+        self.always_legend = False   # a legend even for one series (its name is not the title)
         self.last: dict = {}
 
     def draw(self, t, series, width, height, colors=None):
         """``t``: sample times (s, the newest 0); ``series``: [(label, values)] (NaN: no value
         then); ``colors``: one RGBA per series, or None for implot's own."""
         flags = (implot.Flags_.no_mouse_text | implot.Flags_.no_menus | implot.Flags_.no_box_select).value
-        if len(series) == 1:
+        legend = len(series) > 1 or self.always_legend
+        if not legend:
             flags |= implot.Flags_.no_legend.value
         ys = [np.asarray(y, dtype=np.float64) for _, y in series]
         finite = [y[np.isfinite(y)] for y in ys]
@@ -81,7 +83,7 @@ class TimePlot:
         implot.setup_axis_limits(implot.ImAxis_.y1.value, float(ticks[0]), float(ticks[-1]), implot.Cond_.always.value)
         implot.setup_axis_ticks(implot.ImAxis_.y1.value, [float(v) for v in ticks])
         implot.setup_axis_format(implot.ImAxis_.y1.value, "%.3g")
-        if len(series) > 1:
+        if legend:
             implot.setup_legend(implot.Location_.north.value,
                                 (implot.LegendFlags_.outside | implot.LegendFlags_.horizontal).value)
         k = max(1, len(t) // MAX_POINTS)

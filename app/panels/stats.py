@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
-from .base import record_window
+from .base import record, record_window
 from .compare_plots import ComparePlots
 from .plot import TimePlot, grid
 from .style import DIM, PANEL_W, STATS_H
@@ -30,6 +30,8 @@ class StatsWindow:
         self.plots = [TimePlot(title, unit) for title, unit, _ in self.SERIES]
         self.compare = ComparePlots(app)
         self.show_compare = False      # the next frame selects the Compare tab (set on start)
+        self.show_plot = False         # the next frame selects the Plot tab (a first series chosen)
+        self.tab = "Stats"             # the tab drawn last
 
     def draw(self):
         app = self.app
@@ -40,7 +42,7 @@ class StatsWindow:
         imgui.set_next_window_size_constraints(imgui.ImVec2(260, 160), imgui.ImVec2(1e5, 1e5))
         imgui.set_next_window_bg_alpha(0.82)
         expanded, _ = imgui.begin("Stats###stats", None)
-        if expanded and app.compare.active:
+        if expanded and (app.compare.active or app.recorder.series):
             self.tabs()
         elif expanded:
             self.contents()
@@ -48,17 +50,26 @@ class StatsWindow:
         imgui.end()
 
     def tabs(self):
-        """While comparing: a Compare tab (selected when the comparison starts) beside the stats."""
-        if imgui.begin_tab_bar("stats_tabs"):
-            flags = imgui.TabItemFlags_.set_selected.value if self.show_compare else 0
-            self.show_compare = False
-            if imgui.begin_tab_item("Compare", None, flags)[0]:
-                self.compare.draw()
+        """Stats, and Plot (while quantities are plotted) and Compare (while comparing) tabs;
+        a tab is selected when its first series or the comparison starts."""
+        if not imgui.begin_tab_bar("stats_tabs"):
+            return
+        app = self.app
+        tabs = [("Stats", self.contents, False)]
+        if app.recorder.series:
+            tabs.append(("Plot", app.panels.plot.contents, self.show_plot))
+        if app.compare.active:
+            tabs.append(("Compare", self.compare.draw, self.show_compare))
+        self.show_plot = self.show_compare = False
+        for name, draw, select in tabs:
+            flags = imgui.TabItemFlags_.set_selected.value if select else 0
+            opened = imgui.begin_tab_item(f"{name}###tab{name}", None, flags)[0]
+            record(app, f"tab:{name}")
+            if opened:
+                self.tab = name
+                draw()
                 imgui.end_tab_item()
-            if imgui.begin_tab_item("Stats")[0]:
-                self.contents()
-                imgui.end_tab_item()
-            imgui.end_tab_bar()
+        imgui.end_tab_bar()
 
     def contents(self):
         app = self.app
