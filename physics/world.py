@@ -132,9 +132,12 @@ class World(BodiesMixin, SpringsMixin):
     @solver.setter
     def solver(self, name):
         mode = solvers.get(name)  # ValueError for an unknown name, ImportError for a broken module
+        switched = getattr(self, "_solver_name", name) != name
         self._solver_name = name
         self._mode = mode
         self._settings_store(name)
+        if switched:  # a sleeping pile would hide what the new mode does with it
+            self.wake_all()
         self._pipeline.invalidate()
 
     @property

@@ -48,6 +48,9 @@ CONTACT_FIELDS = {
     "mu_s": ((), f8),              # combined static friction: sqrt(mu_a mu_b)
     "mu_d": ((), f8),              # combined dynamic friction: sqrt(mu_a mu_b)
 }
+#: largest growth of the impulses' time span that ContactBuffer.adopt rescales (beyond: cold start);
+#: 4 covers soft_step -> sequential_impulse at the default 4 sub-steps
+MAX_SPAN_GROWTH = 4.0
 #: the per-point state the narrow phase carries from a step's rows to the next step's
 CARRIED = ("jn", "jt", "stick", "approach")
 
@@ -100,13 +103,21 @@ class ContactBuffer:
         of unknown origin (a mode that does not record itself, or an older step) are
         dropped, which costs only one cold step (Catto 2005: warm starting is only an
         initial guess).
+
+        Rescaling is right for the part of an impulse that a force makes over the span
+        (a resting load: j = F h), not for the part that changes a velocity at once (an
+        impact, a push-out: j = m dv, whatever h is).  After a large growth of the span
+        (a step rate cut from 1 MHz to 60 Hz) the second part, scaled up, would launch
+        bodies (a pile stirred at 1 MHz threw boxes at 140 m/s once back at 60 Hz), so
+        a span growing more than MAX_SPAN_GROWTH times drops the impulses instead.
         """
         n = self.n
         if self.span_step == step:
             if self.span != span and n:
                 r = span / self.span
-                self.cur.jn[:n] *= r
-                self.cur.jt[:n] *= r
+                keep = r <= MAX_SPAN_GROWTH
+                self.cur.jn[:n] *= r if keep else 0.0
+                self.cur.jt[:n] *= r if keep else 0.0
         elif n:
             self.cur.jn[:n] = 0.0
             self.cur.jt[:n] = 0.0
