@@ -1,4 +1,4 @@
-"""The benchmark suite: scenes x solver modes x settings, beside pymunk and pybox2d.
+"""The benchmark suite: scenes x solver modes x settings, beside pymunk, pybox2d and Box2D v3.
 
     python -m bench                 # full run (< 20 min on 2 cores): results, plots, table
     python -m bench --quick         # CI smoke (< 2 min): defaults only, short runs
@@ -6,19 +6,23 @@
     python -m bench --docs-only     # re-plot and rewrite the docs from bench/results/bench.json
 
 Speed: every configuration runs its scene in chunks of steps, interleaved chunk by
-chunk with pymunk and pybox2d on the identical scene (ours, pymunk, pybox2d, ours,
-...), after warm-up chunks that are not timed; ms/step is the median over the timed
-chunks and the ratio to a reference is the median of the per-chunk ratios, so
-machine noise that hits all three engines cancels.  The first step (numba compile
+chunk with pymunk, pybox2d and Box2D v3 (built from its C sources, bench/box2d/) on
+the identical scene (ours, pymunk, pybox2d, box2d_v3, ours, ...), after warm-up chunks
+that are not timed; ms/step is the median over the timed chunks and the ratio to a
+reference is the median of the per-chunk ratios, so machine noise that hits every
+engine cancels.  An engine that cannot run here (no compiler for Box2D v3) is skipped
+with the reason.  The first step (numba compile
 or cache load) is timed apart and never enters ms/step.
 """
 from __future__ import annotations
 
 import argparse
 import json
+import os
 from pathlib import Path
 
 from .configs import QUICK_MODES, available_modes
+from .engines import ENGINES, REF_ENGINES
 from .paths import RESULTS
 from .report.docs import write_docs
 from .report.files import write_outputs
@@ -38,7 +42,13 @@ def parser() -> argparse.ArgumentParser:
     ap.add_argument("--scenes", default=None, help=f"comma-separated scenes from {list(SCENES)}")
     ap.add_argument("--parts", default="overhead,compile,speed,scaling,accuracy,profile",
                     help="comma-separated parts to run (default: all)")
-    ap.add_argument("--no-refs", action="store_true", help="skip pymunk and pybox2d")
+    ap.add_argument("--no-refs", action="store_true", help="skip the reference engines (pymunk, pybox2d, Box2D v3)")
+    ap.add_argument("--refs", default=None,
+                    help=f"comma-separated reference engines (default: {','.join(REF_ENGINES)}; those that cannot run "
+                         "here are skipped with the reason)")
+    ap.add_argument("--box2d-src", default=None, metavar="DIR",
+                    help="Box2D v3 source tree to build and measure (default: ../shared/reference/box2d-v3; "
+                         "also $STELKROPP_BOX2D_SRC)")
     ap.add_argument("--no-compile", action="store_true", help="skip the cold/cached compile subprocesses")
     ap.add_argument("--budget", type=float, default=None, help="seconds per configuration and scene before it is cut")
     ap.add_argument("--write-docs", action="store_true", help="rewrite docs/benchmarks.md from this run")
@@ -63,7 +73,13 @@ def options(a) -> RunOptions:
     if bad:
         parser().error(f"unknown scene or part: {', '.join(bad)} (scenes: {', '.join(SCENES)}; "
                        f"parts: {', '.join(PARTS)})")
-    return RunOptions(modes=modes, scenes=scenes, parts=parts, engines=() if a.no_refs else RunOptions.engines,
+    if a.box2d_src:  # bench/box2d/build.py reads it wherever Box2D v3 is built or loaded
+        os.environ["STELKROPP_BOX2D_SRC"] = str(a.box2d_src)
+    refs = tuple(a.refs.split(",")) if a.refs else RunOptions.engines
+    bad = [e for e in refs if e not in ENGINES]
+    if bad:
+        parser().error(f"unknown engine: {', '.join(bad)} (known: {', '.join(ENGINES)})")
+    return RunOptions(modes=modes, scenes=scenes, parts=parts, engines=() if a.no_refs else refs,
                       quick=a.quick, tiny=a.tiny, budget_s=a.budget or 20.0)
 
 

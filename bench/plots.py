@@ -26,7 +26,8 @@ from .profile import result_stages  # noqa: E402
 
 MODE_COLORS = {"soft_step": "tab:blue", "sequential_impulse": "tab:orange", "impulse": "tab:green",
                "penalty": "tab:red", "hybrid": "tab:purple", "xpbd": "tab:brown"}
-REF_STYLE = {"pymunk": dict(marker="*", color="black", s=180), "pybox2d": dict(marker="s", color="dimgray", s=90)}
+REF_STYLE = {"pymunk": dict(marker="*", color="black", s=180), "pybox2d": dict(marker="s", color="dimgray", s=90),
+             "box2d_v3": dict(marker="D", color="tab:red", s=90)}
 FLOOR = 1e-6  # errors below this are drawn at the floor (log axes)
 
 
@@ -92,7 +93,8 @@ def scaling_plot(res, path):
         return None
     fig, ax = plt.subplots(figsize=(7, 5))
     for eng, style in (("stelkropp", dict(color="tab:blue", marker="o")),
-                       ("pymunk", dict(color="black", marker="*")), ("pybox2d", dict(color="dimgray", marker="s"))):
+                       ("pymunk", dict(color="black", marker="*")), ("pybox2d", dict(color="dimgray", marker="s")),
+                       ("box2d_v3", dict(color="tab:red", marker="D"))):
         pts = sorted((r["n"], r["ms_step"]) for r in rows if r["engine"] == eng and r.get("ms_step"))
         if pts:
             x, y = zip(*pts)

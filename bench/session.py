@@ -2,13 +2,14 @@
 in order, into one result dict (what bench.json holds)."""
 from __future__ import annotations
 
+import dataclasses
 import sys
 import time
 from dataclasses import dataclass
 
 from .accuracy_runs import accuracy_runs
 from .configs import DEFAULT_MODE, configs_for
-from .engines import REF_ENGINES
+from .engines import REF_ENGINES, usable
 from .overhead import overhead
 from .profile import profile_scene
 from .report.files import meta
@@ -97,6 +98,11 @@ def run(opts) -> dict:
     res = {"meta": meta(quick), "modes": opts.modes, "scenes": {}}
     res["meta"]["source_hash"] = source_hash()
     t_all = time.perf_counter()
+    engines, skipped = usable(opts.engines)  # e.g. no compiler for Box2D v3: say so, run the rest
+    for e, why in skipped.items():
+        print(f"bench: {e} skipped: {why}", file=sys.stderr)
+    res["meta"]["engines"], res["meta"]["engines_skipped"] = list(engines), skipped
+    opts = dataclasses.replace(opts, engines=engines)
     configs = {m: configs_for(m, quick) for m in opts.modes}
     parts = opts.parts
     bar = tqdm(total=_units(opts, configs), unit="run", dynamic_ncols=True, file=sys.stderr)

@@ -43,6 +43,7 @@ class Box2DV3Sim(Sim):
     """
 
     engine = ENGINE
+    settings_label = "4 sub-steps, 1 thread"  # the bench's defaults (an instance says its own)
 
     def __init__(self, desc, threads=1, substeps=4, sleeping=False, scheduler="shim", track_angles=True,
                  box2d_src=None):

@@ -50,16 +50,18 @@ def _head(m):
             ".venv/bin/python -m bench.profile --scene pyramid20   # stage breakdown of one scene",
             "```", "",
             "Options: `--modes soft_step,sequential_impulse`, `--scenes pyramid20,rain1000`, "
-            "`--parts speed,accuracy,...`, `--no-refs`, `--no-compile`, `--budget SECONDS`.", "",
+            "`--parts speed,accuracy,...`, `--refs pymunk,box2d_v3`, `--box2d-src DIR`, `--no-refs`, `--no-compile`, `--budget SECONDS`.", "",
             "## How it is measured", "",
             "* Scenes are built from one description (the shipped scene file when there is one, else generated in "
-            "`bench/scenes.py`) in Stelkropp, pymunk 7 (Chipmunk2D) and pybox2d 2.3.10 (Box2D 2.3): same bodies, "
+            "`bench/scenes.py`) in Stelkropp, pymunk 7 (Chipmunk2D), pybox2d 2.3.10 (Box2D 2.3) and Box2D v3 itself "
+            "(built from `../shared/reference/box2d-v3` or `--box2d-src DIR` with cmake, driven through our C shim, "
+            "`bench/box2d/`; one thread, 4 sub-steps): same bodies, "
             "vertices, masses (density x area), friction, gravity (-10), dt (1/60), sleeping off. Friction is "
             "combined as the geometric mean in every engine (pymunk shapes get sqrt(mu), since Chipmunk multiplies). "
             "pymunk runs 10 iterations (its default; other Chipmunk defaults kept, e.g. `collision_slop` 0.1 m), "
-            "pybox2d `Step(dt, 8, 3)`.",
-            "* Speed: each configuration runs its scene in chunks, interleaved chunk by chunk with pymunk and pybox2d "
-            "(ours, pymunk, pybox2d, ours, ...) on fresh copies of the same scene; warm-up chunks are not timed. "
+            "pybox2d `Step(dt, 8, 3)`, Box2D v3 `b2World_Step(dt, 4)`.",
+            "* Speed: each configuration runs its scene in chunks, interleaved chunk by chunk with pymunk, pybox2d "
+            "and Box2D v3 (ours, pymunk, pybox2d, box2d_v3, ours, ...) on fresh copies of the same scene; warm-up chunks are not timed. "
             "ms/step is the median over timed chunks; `x pymunk` is the median of the per-chunk ratios ours/pymunk "
             "(below 1: faster than pymunk). The first step (numba compile or cache load) is reported separately as "
             "`first step s` and never enters ms/step. The reference rows pool the references' chunks over all "
@@ -76,7 +78,7 @@ def _speed_md(res, rel):
     sp = res.get("speed", [])
     if sp:
         L += ["## Speed: every scene, mode and setting", "",
-              "Columns: median ms/step; ours/pymunk and ours/pybox2d (same run, interleaved; below 1 is faster); "
+              "Columns: median ms/step; ours/pymunk, ours/pybox2d and ours/Box2D v3 (same run, interleaved; below 1 is faster); "
               "the scene's error (pyramids: top-box drift in m, rain: max penetration in m); the first step "
               "(compile or cache load) in seconds.", ""]
         for key in dict.fromkeys(r["scene"] for r in sp):
@@ -99,9 +101,9 @@ def _scaling_md(res, rel):
               "Free-standing columns of 10 boxes on one ground (contacts per body constant), default mode. "
               "Log-log slopes: " + ", ".join(f"{e} {loglog_slope(sc, e):.2f}" for e in ("stelkropp", *REF_ENGINES)
                                              if loglog_slope(sc, e) is not None) + " (1.0 is linear).", "",
-              md_table(["bodies", "engine", "ms/step", "x pymunk", "x pybox2d"],
+              md_table(["bodies", "engine", "ms/step", "x pymunk", "x pybox2d", "x Box2D v3"],
                        [[r["n"], r["engine"], fmt(r["ms_step"]), fmt(r.get("ratio_pymunk"), 2),
-                         fmt(r.get("ratio_pybox2d"), 2)] for r in sc]), "",
+                         fmt(r.get("ratio_pybox2d"), 2), fmt(r.get("ratio_box2d_v3"), 2)] for r in sc]), "",
               f"![scaling]({rel}/scaling.png)", ""]
     return L
 

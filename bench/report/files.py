@@ -35,10 +35,10 @@ def write_outputs(res, outdir):
         json.dump(res, f, indent=1, default=float)
     write_csv(outdir / "speed.csv", res.get("speed", []),
          ["scene", "engine", "mode", "label", "settings", "default", "ms_step", "ms_step_min", "ratio_pymunk",
-          "ratio_pybox2d", "error", "top_drift", "max_penetration", "mean_penetration", "escaped", "steps",
+          "ratio_pybox2d", "ratio_box2d_v3", "error", "top_drift", "max_penetration", "mean_penetration", "escaped", "steps",
           "sim_time", "chunks", "first_step_s", "status", "source"])
     write_csv(outdir / "scaling.csv", res.get("scaling", []),
-         ["n", "engine", "mode", "ms_step", "ratio_pymunk", "ratio_pybox2d", "contacts", "chunks", "status"])
+         ["n", "engine", "mode", "ms_step", "ratio_pymunk", "ratio_pybox2d", "ratio_box2d_v3", "contacts", "chunks", "status"])
     write_csv(outdir / "accuracy.csv", res.get("accuracy", []),
          ["engine", "mode", "label", "settings", "dt", "integrator", "scenario", "metric", "value", "expected",
           "error", "unit", "default", "note"])

@@ -1,5 +1,5 @@
-"""The summary lines on the targets (terminal and docs): ratios to pymunk and pybox2d, the
-Box2D v3 estimate, the sub-step cost fit, scaling slopes, overhead and start-up."""
+"""The summary lines on the targets (terminal and docs): ratios to pymunk, pybox2d and Box2D v3
+(measured in the same run), the sub-step cost fit, scaling slopes, overhead and start-up."""
 from __future__ import annotations
 
 import numpy as np
@@ -8,10 +8,6 @@ from ..configs import DEFAULT_MODE
 from ..engines import REF_ENGINES
 from ..scaling import loglog_slope
 from .tables import fmt
-
-# Box2D v3.2 (C, SIMD, graph colouring; not on PyPI) on this machine, from
-# ../shared/PLATFORM_NOTES.md: ms/step and pymunk's figure measured with it.
-BOX2D_V3 = {"pyramid20": ((0.08, 0.10), 0.31), "pyramid40": ((0.33, 0.44), 1.30), "rain1000": ((0.19, 0.24), 1.28)}
 
 
 def substep_fit(speed, scene, mode=DEFAULT_MODE):
@@ -57,11 +53,13 @@ def _ratio_lines(res):
                f" ({fmt(pm and pm.get('ms_step'))} ms), {fmt(r.get('ratio_pybox2d'), 2)}x pybox2d")
         if rp is not None and key in ("pyramid20", "rain1000"):
             txt += " -- target (<= pymunk) " + ("MET" if rp <= 1.0 else "NOT MET")
-        if key in BOX2D_V3 and pm and pm.get("ms_step"):
-            (lo, hi), pm_ref = BOX2D_V3[key]
-            est = pm["ms_step"] * 0.5 * (lo + hi) / pm_ref
-            ours_ms = rp * pm["ms_step"] if rp is not None else r["ms_step"]  # noise-cancelled
-            txt += f"; vs Box2D v3 (estimated {est:.3f} ms here, from pymunk's time): {ours_ms / est:.1f}x"
+        b3 = next((x for x in sp if x["scene"] == key and x["engine"] == "box2d_v3"), None)
+        if r.get("ratio_box2d_v3") is not None:
+            txt += (f"; {r['ratio_box2d_v3']:.2f}x Box2D v3 ({fmt(b3 and b3.get('ms_step'))} ms, "
+                    "measured in this run)")
+        else:
+            why = (res.get("meta", {}).get("engines_skipped") or {}).get("box2d_v3", "not run")
+            txt += f"; Box2D v3 not measured ({why})"
         L.append(txt)
     return L
 

@@ -17,13 +17,13 @@ def fmt(v, nd=3) -> str:
 
 def speed_table(rows, defaults_only=False):
     """(header, rows) of the speed table for speed rows (``defaults_only``: default settings)."""
-    hdr = ["scene", "configuration", "ms/step", "x pymunk", "x pybox2d", "error", "first step s", "status"]
+    hdr = ["scene", "configuration", "ms/step", "x pymunk", "x pybox2d", "x Box2D v3", "error", "first step s", "status"]
     out = []
     for r in rows:
         if defaults_only and not r.get("default"):
             continue
         out.append([r["scene"], r["label"], fmt(r.get("ms_step")), fmt(r.get("ratio_pymunk"), 2),
-                    fmt(r.get("ratio_pybox2d"), 2), fmt(r.get("error"), 4), fmt(r.get("first_step_s"), 2),
+                    fmt(r.get("ratio_pybox2d"), 2), fmt(r.get("ratio_box2d_v3"), 2), fmt(r.get("error"), 4), fmt(r.get("first_step_s"), 2),
                     r.get("status", "")[:40]])
     return hdr, out
 

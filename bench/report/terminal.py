@@ -16,9 +16,10 @@ def print_report(res, file=sys.stdout):
     print(text_table(hdr, rows), file=file)
     if res.get("scaling"):
         print("\nScaling (columns of 10 boxes)", file=file)
-        sh = ["n", "engine", "ms/step", "x pymunk", "x pybox2d"]
+        sh = ["n", "engine", "ms/step", "x pymunk", "x pybox2d", "x Box2D v3"]
         print(text_table(sh, [[r["n"], r["engine"], fmt(r["ms_step"]), fmt(r.get("ratio_pymunk"), 2),
-                               fmt(r.get("ratio_pybox2d"), 2)] for r in res["scaling"]]), file=file)
+                               fmt(r.get("ratio_pybox2d"), 2), fmt(r.get("ratio_box2d_v3"), 2)]
+                              for r in res["scaling"]]), file=file)
     if res.get("accuracy"):
         print("\nAccuracy (defaults, dt 1/60; error: relative or absolute as per metric, ideal 0)", file=file)
         ah, ar = accuracy_table(res["accuracy"])
