@@ -22,7 +22,13 @@ def main(argv=None) -> int:
     ap.add_argument("--modes", default="", help="comma-separated solver modes (default: every available mode)")
     ap.add_argument("--probes", default="", help="comma-separated probe function names (default: all)")
     ap.add_argument("--out", default=str(DOC))
+    ap.add_argument("--samples", action="store_true", help="only Box2D v3's samples beside Box2D (samples.py)")
+    ap.add_argument("--only", help="with --samples: figure functions whose name contains this (nothing written)")
+    ap.add_argument("--box2d-live", action="store_true", help="with --samples: run Box2D v3 now, not its recorded figures")
     a = ap.parse_args(argv)
+    if a.samples:
+        from .samples import main_samples
+        return main_samples(a.out, a.only, a.box2d_live)
     modes = [m for m in a.modes.split(",") if m] or physics.solvers_available()
     wanted = [n for n in a.probes.split(",") if n]
     known = [p.measure.__name__ for p in PROBES]
@@ -38,6 +44,7 @@ def main(argv=None) -> int:
             results[probe.name][mode] = out
             print(f"{probe.name:22s} {mode:20s} {out} ({out.seconds:.1f} s)", flush=True)
     if len(probes) == len(PROBES):
-        Path(a.out).write_text(render(results, modes, a.quick, time.perf_counter() - t0))
+        from .samples import keep_section
+        Path(a.out).write_text(keep_section(Path(a.out), render(results, modes, a.quick, time.perf_counter() - t0)))
         print(f"wrote {a.out}")
     return 0

@@ -2,7 +2,8 @@
 
 The verbs every constraint kind speaks, for contacts: ``prepare_contacts`` (once
 per step), ``warm_start_contacts``, ``solve_contacts`` (with bias; without bias it
-is the relax pass), ``restitution_contacts`` and ``store_impulses``.  The model:
+is the relax pass), ``restitution_contacts`` (constraints/contact_restitution.py)
+and ``store_impulses``.  The model:
 soft normal rows with bias (constraints/softness.py), relax, Coulomb friction,
 the 2x2 block solver of constraints/block.py, restitution.  The layout makes a
 sub-step pass cheap:
@@ -37,8 +38,10 @@ from .block import block_mass, solve_block
 from .body_rows import DCOS, DPX, DPY, DSIN, II, IM, VX, VY, W
 
 # per point p the fields start at p * PT
-RNA, RNB, RTA, RTB, MASS_N, MASS_T, SEP0, MU, VN0, MAXJ, JN, JT = range(12)
-PT = 12
+# VN0: the normal speed just before the point first pushed this step (the speed at first touch:
+# restitution's reference), MAXJ its largest normal impulse, BOUNCED 1.0 once restitution acted
+RNA, RNB, RTA, RTB, MASS_N, MASS_T, SEP0, MU, VN0, MAXJ, JN, JT, BOUNCED = range(13)
+PT = 13
 K11 = 2 * PT      # block solver: K = [[k11, k12], [k12, k22]] and 1 / det K
 K22 = K11 + 1
 K12 = K11 + 2
@@ -47,7 +50,8 @@ BLOCK = K11 + 4   # 1.0 when K is well conditioned (the block solver may run)
 RIGID = K11 + 5   # 1.0 when one of the bodies does not move (static/kinematic): stiffer rows
 NX = K11 + 6      # the normal
 NY = K11 + 7
-NF = K11 + 8
+KE0 = K11 + 8     # kinetic energy of the pair when the manifold first pushed this step (restitution's cap)
+NF = K11 + 9
 
 
 @kernel
@@ -100,8 +104,12 @@ def prepare_contacts(c, p, B, C, R):
             # Coulomb (seed eq. 23): static coefficient while sticking, dynamic once sliding
             R[k, o + MU] = C.mu_s[k] if abs(vt) <= stick_speed else C.mu_d[k]
             R[k, o + MAXJ] = 0.0
+            R[k, o + BOUNCED] = 0.0
             R[k, o + JN] = C.jn[k, q]
             R[k, o + JT] = C.jt[k, q]
+        if cnt < 2:  # the restitution checks read the second point's flags
+            R[k, PT + MAXJ] = 0.0
+            R[k, PT + BOUNCED] = 0.0
         R[k, NX] = nx
         R[k, NY] = ny
         R[k, RIGID] = 1.0 if (ima == 0.0 or imb == 0.0) else 0.0
@@ -154,12 +162,26 @@ def warm_start_contacts(c, SB, C, R):
         SB[b, W] += SB[b, II] * ab
 
 
+@kernel(inline="always")
+def _energy(vx, vy, w, im, ii):
+    """Kinetic energy (J) of a body from its velocities and inverse mass and inertia (0: fixed)."""
+    e = 0.0
+    if im > 0.0:
+        e += 0.5 * (vx * vx + vy * vy) / im
+    if ii > 0.0:
+        e += 0.5 * w * w / ii
+    return e
+
+
 @kernel
 def solve_contacts(c, p, SB, C, R, use_bias, track):
     """One Gauss-Seidel pass over the manifolds: soft normal rows (>= 0), then friction.
 
     ``use_bias``: the biased pass (overlap pushed out softly); without it the
-    relax pass.  Speculative points (still apart) are rigid rows that let the
+    relax pass.  A biased pass also records, for each point that has not pushed
+    yet this step, its normal speed before the impulse (``VN0``): once it pushes,
+    that is the speed at first touch (after this sub-step's gravity), which
+    restitution reflects (constraints/contact_restitution.py).  Speculative points (still apart) are rigid rows that let the
     bodies close the gap and no further.  With ``p.block_solver`` a two-point
     manifold whose rows are in the same regime is solved as a 2x2 LCP
     (constraints/block.py).  ``track``: record each point's largest normal
@@ -188,6 +210,8 @@ def solve_contacts(c, p, SB, C, R, use_bias, track):
         any_ = ima * ny
         bnx = imb * nx
         bny = imb * ny
+        if use_bias and C.e[k] != 0.0 and R[k, MAXJ] == 0.0 and R[k, PT + MAXJ] == 0.0:
+            R[k, KE0] = _energy(vax, vay, wa, ima, iia) + _energy(vbx, vby, wb, imb, iib)
         soft = p.soft_static if R[k, RIGID] != 0.0 else p.soft_dyn
         rate = soft[0]
         mscale = soft[1]
@@ -237,6 +261,10 @@ def solve_contacts(c, p, SB, C, R, use_bias, track):
             dvn = (vbx - vax) * nx + (vby - vay) * ny
             v0 = dvn + wb * rnb0 - wa * rna0
             v1 = dvn + wb * rnb1 - wa * rna1
+            if use_bias and R[k, MAXJ] == 0.0:
+                R[k, VN0] = v0
+            if use_bias and R[k, PT + MAXJ] == 0.0:
+                R[k, PT + VN0] = v1
             # free speeds (this manifold's impulses removed) plus bias
             g0 = v0 - (k11 * old0 + k12 * old1) + bias0
             g1 = v1 - (k12 * old0 + k22 * old1) + bias1
@@ -264,6 +292,8 @@ def solve_contacts(c, p, SB, C, R, use_bias, track):
                 else:
                     bias, ms, isc = bias1, ms1, is1
                 vn = (vbx - vax) * nx + (vby - vay) * ny + wb * rnb - wa * rna
+                if use_bias and R[k, o + MAXJ] == 0.0:
+                    R[k, o + VN0] = vn
                 old = R[k, o + JN]
                 j = -R[k, o + MASS_N] * ms * (vn + bias) - isc * old
                 new = max(old + j, 0.0)
@@ -304,49 +334,9 @@ def solve_contacts(c, p, SB, C, R, use_bias, track):
 
 
 @kernel
-def restitution_contacts(c, p, SB, C, R):
-    """Newton's law v_n' = -e v_n (seed eq. 13) for points that hit faster than
-    ``p.restitution_threshold`` and pushed this step (a speculative point never
-    reached does not bounce)."""
-    threshold = p.restitution_threshold
-    for k in range(c.nc):
-        e = C.e[k]
-        if e != 0.0:
-            _restitution(SB, C, k, R, threshold, e)
-
-
-@kernel
 def store_impulses(c, C, R):
     """The accumulated impulses back into the contact table (next step's warm start)."""
     for k in range(c.nc):
         for q in range(C.count[k]):
             C.jn[k, q] = R[k, q * PT + JN]
             C.jt[k, q] = R[k, q * PT + JT]
-
-
-@kernel
-def _restitution(SB, C, k, R, threshold, e):
-    a = C.a[k]
-    b = C.b[k]
-    nx = R[k, NX]
-    ny = R[k, NY]
-    ima = SB[a, IM]
-    imb = SB[b, IM]
-    for q in range(C.count[k]):
-        o = q * PT
-        vn0 = R[k, o + VN0]
-        if vn0 > -threshold or R[k, o + MAXJ] == 0.0:
-            continue
-        rna = R[k, o + RNA]
-        rnb = R[k, o + RNB]
-        vn = (SB[b, VX] - SB[a, VX]) * nx + (SB[b, VY] - SB[a, VY]) * ny + SB[b, W] * rnb - SB[a, W] * rna
-        old = R[k, o + JN]
-        new = max(old - R[k, o + MASS_N] * (vn + e * vn0), 0.0)
-        R[k, o + JN] = new
-        j = new - old
-        SB[a, VX] -= ima * j * nx
-        SB[a, VY] -= ima * j * ny
-        SB[a, W] -= SB[a, II] * j * rna
-        SB[b, VX] += imb * j * nx
-        SB[b, VY] += imb * j * ny
-        SB[b, W] += SB[b, II] * j * rnb

@@ -3,8 +3,10 @@
 Per step: contact rows are prepared once; then for each of N sub-steps:
 integrate velocities, springs, warm start, solve contacts softly (with bias),
 integrate positions, relax (solve again without bias so the push-out leaves no
-velocity behind).  Finally one restitution pass and the impulses are stored for
-the next step's warm start.  Sub-stepping gives the stiffness of a small time
+velocity behind), restitution for the points that first touched in this
+sub-step (constraints/contact_restitution.py; Box2D bounces once per step,
+after the last sub-step, at the speed the step began with).  Finally the
+impulses are stored for the next step's warm start.  Sub-stepping gives the stiffness of a small time
 step at the price of one narrow phase per step (Catto, "Solver2D", 2024).
 """
 from __future__ import annotations
@@ -12,8 +14,8 @@ from __future__ import annotations
 from ..._jit import kernel
 from ...constraints.body_rows import (gather_bodies, integrate_row_positions, integrate_row_velocities,
                                       load_velocities, store_velocities)
-from ...constraints.contact_soft import (prepare_contacts, restitution_contacts, solve_contacts, store_impulses,
-                                         warm_start_contacts)
+from ...constraints.contact_restitution import restitution_contacts
+from ...constraints.contact_soft import prepare_contacts, solve_contacts, store_impulses, warm_start_contacts
 from ...constraints.point import zero_impulses
 from ...constraints.springs.substep import solve_springs
 
@@ -38,10 +40,10 @@ def soft_step(ctx, par, B, C, S, R, SB):
             load_velocities(B, n, SB)
         warm_start_contacts(c, SB, C, R)
         for it in range(iterations):
-            solve_contacts(c, p, SB, C, R, True, it == iterations - 1)
+            solve_contacts(c, p, SB, C, R, True, True)
         integrate_row_positions(B, n, SB, h)
         if p.relax:
             solve_contacts(c, p, SB, C, R, False, True)
-    restitution_contacts(c, p, SB, C, R)
+        restitution_contacts(c, p, SB, C, R)  # in the sub-step of first touch
     store_impulses(c, C, R)
     store_velocities(B, n, SB)
