@@ -1,6 +1,8 @@
 """docs/benchmarks.md rendered from a result dict (``python -m bench --write-docs``)."""
 from __future__ import annotations
 
+import json
+
 import os
 
 from .. import accuracy
@@ -9,6 +11,7 @@ from ..engines import REF_ENGINES
 from ..paths import DOCS, DOCS_NOTES, RESULTS
 from ..profile import narrowphase_per_pair, result_stages
 from ..scaling import loglog_slope
+from .suite_table import table_md
 from .summary import summary_lines
 from .tables import accuracy_table, fmt, md_table, speed_table
 
@@ -24,7 +27,7 @@ def write_docs(res, outdir=RESULTS, path=DOCS):
 def render_docs(res, rel, outdir) -> str:
     """docs/benchmarks.md for result dict ``res``; ``rel``: the results directory relative to docs/."""
     L = _head(res["meta"]) + ["## Summary", ""] + [f"* {ln}" for ln in summary_lines(res)] + [""]
-    for part in (_speed_md, _scaling_md, _accuracy_md, _profile_md, _overhead_md):
+    for part in (_speed_md, _suite_md, _scaling_md, _accuracy_md, _profile_md, _overhead_md):
         L += part(res, rel)
     if DOCS_NOTES.exists():
         L += [DOCS_NOTES.read_text().rstrip(), ""]
@@ -48,6 +51,7 @@ def _head(m):
             ".venv/bin/python -m bench --quick        # CI smoke (< 2 min), results in bench/results/quick/",
             ".venv/bin/python -m bench --docs-only    # re-plot and rewrite this page from bench/results/bench.json",
             ".venv/bin/python -m bench.profile --scene pyramid20   # stage breakdown of one scene",
+            ".venv/bin/python -m bench.suite_speed    # Box2D v3's own benchmark suite, beside Box2D v3 (1 and 2 threads)",
             "```", "",
             "Options: `--modes soft_step,sequential_impulse`, `--scenes pyramid20,rain1000`, "
             "`--parts speed,accuracy,...`, `--refs pymunk,box2d_v3`, `--box2d-src DIR`, `--no-refs`, `--no-compile`, `--budget SECONDS`.", "",
@@ -90,6 +94,20 @@ def _speed_md(res, rel):
                   md_table(hdr, rows), "",
                   f"![{key}: ms/step vs error]({rel}/pareto_{key}.png)", ""]
     return L
+
+
+def _suite_md(res, rel):
+    """Box2D v3's own benchmark suite (``python -m bench.suite_speed``), when it has been run."""
+    path = RESULTS / "box2d_suite.json"
+    if not path.exists():
+        return []
+    rows = json.loads(path.read_text())
+    return ["## Box2D v3's benchmark suite", "",
+            "`shared/benchmarks.c` of the Box2D v3 snapshot rebuilt as scenes (`bench/suite/`), timed interleaved "
+            "in Stelkropp (soft_step defaults), Box2D v3 with one and two threads and pymunk "
+            "(`python -m bench.suite_speed`; `x Box2D 1T` is ours / Box2D's one-thread time per chunk). "
+            "Scenes that need shapes or joints Stelkropp does not have yet say so.", "",
+            *table_md(rows), "", "![suite](../bench/results/box2d_suite.png)", ""]
 
 
 def _scaling_md(res, rel):

@@ -1,0 +1,23 @@
+"""The table of Box2D v3's benchmark suite run (bench/suite_speed.py), for the terminal and the docs."""
+from __future__ import annotations
+
+from .tables import fmt
+
+# the engine labels of a suite row
+OURS, B1, B2, PM = "stelkropp", "box2d_v3 1 thread", "box2d_v3 2 threads", "pymunk"
+
+
+def table_md(rows) -> list[str]:
+    """Markdown lines: one row per scene, ms/step per engine and our ratio to each."""
+    hdr = ["scene", "bodies", "steps", "stelkropp ms", "Box2D v3 1T ms", "Box2D v3 2T ms", "pymunk ms",
+           "x Box2D 1T", "x Box2D 2T", "x pymunk", "status"]
+    L = ["| " + " | ".join(hdr) + " |", "|" + "---|" * len(hdr)]
+    for r in rows:
+        ms, ra = r.get("ms_step", {}), r.get("ratio", {})
+        st = r["status"]
+        if st == "stelkropp cannot build it yet":
+            st = "not built: " + ("; ".join(r["needs"]) or r["not_built"].get(OURS, ""))
+        L.append("| " + " | ".join(str(x) for x in [
+            r["scene"], r["bodies"], r.get("steps_done", "-"), fmt(ms.get(OURS)), fmt(ms.get(B1)), fmt(ms.get(B2)),
+            fmt(ms.get(PM)), fmt(ra.get(B1), 2), fmt(ra.get(B2), 2), fmt(ra.get(PM), 2), st]) + " |")
+    return L
