@@ -14,7 +14,7 @@ from .spring import Spring
 from .world import World
 
 __all__ = ["World", "Body", "Spring", "Polygon", "Circle", "SceneError", "SimulationError",
-           "load_scene", "save_scene", "solvers_available"]
+           "load_scene", "save_scene", "solvers_available", "tune"]
 
 
 def load_scene(path):
@@ -33,3 +33,12 @@ def save_scene(world, path, name=None, description=None) -> None:
 def solvers_available() -> list[str]:
     from .solvers import available
     return available()
+
+
+def tune(source, steps=600, metric="trajectory", budget=0.01, scheduler=None, modes=None, progress=True):
+    """The fastest solver mode and settings whose error on ``source`` (a World, scene data or a scene
+    file) stays within ``budget`` over ``steps`` steps; see physics.tuning.search.tune (returns a
+    TuneResult: rows, front, choice, fragment; ValueError for a bad steps/metric/budget/scheduler)."""
+    from .tuning import tune as _tune
+    return _tune(source, steps=steps, metric=metric, budget=budget, scheduler=scheduler, modes=modes,
+                 progress=progress)

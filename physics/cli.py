@@ -4,6 +4,7 @@
     validate SCENE...
     info SCENE [--json]
     schema                      print the scene format's JSON Schema
+    tune SCENE --budget B [--steps N] [--metric M] [--apply] [--scheduler ADDR]   (physics/tuning/)
 
 Exit codes: 0 success, 1 a bad scene or option, 2 the simulation produced
 non-finite values (the state written is the last finite one, "finite": false).
@@ -80,6 +81,8 @@ def _parser() -> argparse.ArgumentParser:
     inf.add_argument("scene")
     inf.add_argument("--json", action="store_true", help="print machine-readable JSON")
     inf.set_defaults(run=info)
+    from .tuning.command import add_parser as add_tune
+    add_tune(sub, _count)
     sch = sub.add_parser("schema", help="print the scene format's JSON Schema (scenes/stelkropp.schema.json)")
     sch.set_defaults(run=schema)
     return p

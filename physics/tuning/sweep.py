@@ -1,0 +1,90 @@
+"""Running the tuner's cases as dask.distributed tasks, with a progress bar.
+
+``scheduler=None`` starts a LocalCluster on this machine (2 worker processes of
+one thread each); an address (``tcp://host:8786``) uses that cluster;
+``"inline"`` runs the cases one after another in this process (no Dask: for
+the Python API inside a process that must not spawn workers).  Each worker
+runs one case at a time on one thread, so a case's timing never shares its
+core with another case on the same worker (issue 19: timings need a quiet
+core); the workers themselves may still share the machine, which is why the
+table's seconds are for ranking, not a benchmark.
+"""
+from __future__ import annotations
+
+import sys
+
+LOCAL_WORKERS = 2
+CONNECT_SECONDS = 10
+
+
+class Sweep:
+    """A context manager that maps a function over cases on Dask (or inline); ValueError naming
+    ``scheduler`` if the address cannot be reached, ImportError if dask[distributed] is missing."""
+
+    def __init__(self, scheduler: str | None = None, workers: int = LOCAL_WORKERS, progress: bool = True):
+        self.scheduler = scheduler
+        self.workers = workers
+        self.progress = progress
+        self._client = self._cluster = None
+
+    def __enter__(self):
+        if self.scheduler == "inline":
+            return self
+        try:
+            from dask.distributed import Client, LocalCluster
+        except ImportError:
+            raise ImportError("the tuner runs its sweep on Dask: pip install 'stelkropp[tune]' "
+                              "(dask[distributed]), or pass scheduler='inline'") from None
+        if self.scheduler is None:
+            self._cluster = LocalCluster(n_workers=self.workers, threads_per_worker=1, processes=True,
+                                         dashboard_address=None)
+            self._client = Client(self._cluster)
+        else:
+            if not isinstance(self.scheduler, str) or not self.scheduler:
+                raise ValueError(f"scheduler: expected an address such as tcp://host:8786, got {self.scheduler!r}")
+            try:
+                self._client = Client(self.scheduler, timeout=f"{CONNECT_SECONDS}s")
+            except (OSError, TimeoutError, ValueError, TypeError) as exc:
+                raise ValueError(f"scheduler: cannot reach {self.scheduler} within {CONNECT_SECONDS} s "
+                                 f"({type(exc).__name__}: {str(exc)[:200]})") from None
+        return self
+
+    def __exit__(self, *exc):
+        if self._client is not None:
+            self._client.close()
+        if self._cluster is not None:
+            self._cluster.close()
+        return False
+
+    @property
+    def where(self) -> str:
+        """Where the cases run, for the report."""
+        if self.scheduler == "inline":
+            return "inline (this process)"
+        if self._cluster is not None:
+            return f"Dask LocalCluster, {self.workers} workers x 1 thread"
+        return f"Dask scheduler {self.scheduler}"
+
+    def map(self, fn, cases: list, *args, desc: str = "cases") -> list:
+        """``[fn(case, *args) for case in cases]``, run as Dask tasks; results in the cases' order."""
+        from tqdm import tqdm
+        bar = tqdm(total=len(cases), desc=desc, unit="case", file=sys.stderr,
+                   disable=not (self.progress and sys.stderr.isatty()))
+        try:
+            if self._client is None:
+                out = []
+                for c in cases:
+                    out.append(fn(c, *args))
+                    bar.update()
+                return out
+            from dask.distributed import as_completed
+            # pure=False: a case is timed, so an identical case must run again, not come from a cache
+            futures = [self._client.submit(fn, c, *args, pure=False) for c in cases]
+            index = {f.key: i for i, f in enumerate(futures)}
+            out = [None] * len(cases)
+            for fut in as_completed(futures):
+                out[index[fut.key]] = fut.result()
+                bar.update()
+            return out
+        finally:
+            bar.close()
