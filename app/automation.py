@@ -46,6 +46,8 @@ def status(app) -> dict:
     w, ed, small = app.world, app.editor, len(app.rd_ids) <= 300
     return {
         "frame": app.frame_no, "ready": app.warmup.ready, "warm_finished": app.warmup.finished,
+        "progress": app.warmup.progress()[0], "kernels_compiled": app.warmup.kernels_compiled(),
+        "t_gate": app.warmup.t_gate,
         "warm_errors": app.warmup.errors, "running": app.sim.running, "solver": w.solver,
         "n_bodies": len(w.bodies), "n_springs": len(w.springs),
         "bodies": _bodies(app) if small and app.warmup.ready else [],

@@ -35,7 +35,7 @@ class MainLoop:
         w = self.window
         limit = self.fps_limit
         if not w.warmup.ready:
-            limit = 8.0      # leave the interpreter to the compiler thread
+            limit = 4.0      # leave the interpreter to the compiler thread (the scene is paused)
         elif w.warmup.busy:
             limit = 20.0
         if limit and not (self.fixed_step and w.warmup.ready):
@@ -78,5 +78,6 @@ class MainLoop:
             print("stelkropp: OpenGL/frame errors:", *w.gl_errors[:20], sep="\n  ", file=sys.stderr)
             self.code = self.code or 3
         w.autosaver.end_session()
+        w.warmup.close()
         w.close()
         return self.code

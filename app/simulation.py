@@ -10,6 +10,8 @@ import numpy as np
 
 import physics
 
+from . import compile_units
+
 MAX_STEPS_PER_FRAME = 4
 
 
@@ -49,8 +51,10 @@ class Simulation:
     def step(self, n) -> float:
         """Take n steps if the kernels are ready and the lock is free; returns ms spent."""
         w = self.editor.world
-        if not self.warmup.can_step(w.solver, w.integrator):
-            self.compiling_note = f"compiling {w.solver} ({w.integrator}) ..."
+        bp = compile_units.broadphase_of(w)
+        if not self.warmup.can_step(w.solver, w.integrator, bp):
+            self.warmup.prioritize(w.solver, w.integrator, bp)
+            self.compiling_note = f"compiling {w.solver} ({w.integrator}, {bp} broad phase) ..."
             return 0.0
         if not self.lock.acquire(blocking=False):
             self.compiling_note = "compiling kernels ..."

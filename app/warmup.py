@@ -1,121 +1,248 @@
-"""Compile the physics kernels in a background thread while the window shows progress.
+"""Compile the physics kernels for the open scene first, on both cores, while the window draws it.
 
-numba compiles on first call; a cold first launch takes tens of seconds.  The
-first stages (everything the open scene needs: its solver and integrator with
-every broad and narrow phase) gate the simulation.  Other solver modes and
-integrators compile on demand, again in the background, when the user
-switches to them; the window keeps drawing and simply does not step that
-world until its kernels are ready, so it never freezes.  Python threads share
-one interpreter lock, so the window throttles its frame rate while a compile
-runs (see ``busy``).
+numba compiles on first call; a cold first launch compiles about eighty kernels.  The window
+draws the scene (paused) from its first frame without any kernel (``app.preview``).  The open
+scene's step is split in two (``app.compile_units.gate_units``): this process compiles the solver
+mode and the frame's kernels in a background thread while a helper process
+(``app.compile_helper``) compiles the collision stages on the other core; then one probe step here
+loads the helper's kernels from numba's disk cache and the scene may run (``ready``).  After that
+the helper goes on with the other broad phases and solver modes; switching to one loads it from
+the cache (``prioritize``), or compiles it next if the helper has not got there yet.
+
+Each unit that is in the cache leaves a marker file in numba's cache directory (which is keyed
+on the physics sources, so an edit of ``physics/`` starts again): a launch whose units are all
+marked loads everything here, without starting the helper.
+
+Progress is counted in kernels really compiled (both processes), against how many the last cold
+launch compiled for the same units (``COUNTS``, kept beside the cache; ``DEFAULT_COUNTS`` the
+first time).  Python threads share one interpreter lock, so the window throttles its frame rate
+while this process compiles (see ``busy``).
 """
 from __future__ import annotations
 
+import json
 import threading
 import time
 import traceback
+from . import compile_units
+from .compile_helper import CompileHelper
+from .compile_worker import listen
 
-import physics
+# kernels a cold launch compiles per unit (measured on this code; only the progress bar uses it)
+DEFAULT_COUNTS = {"solve": 40, "frame": 25, "broad": 15, "narrow": 40, "step": 6}
 
 
-def _probe_world(solver: str):
-    w = physics.World(solver=solver)
-    w.add_body(physics.Polygon.box(10, 1), kind="static", position=(0, -0.5))
-    w.add_body(physics.Polygon.box(1, 1), position=(0, 0.49))
-    w.add_body(physics.Polygon.box(1, 1), position=(0.2, 1.5), angle=0.1)
-    w.add_body(physics.Circle(0.4), position=(1.5, 0.45))
-    w.add_body(physics.Circle(0.4), position=(1.6, 1.3))
-    hexa = w.add_body(physics.Polygon.regular(6, 0.5), position=(-1.5, 0.45))
-    w.add_body(physics.Polygon.box(0.5, 0.5), kind="kinematic", position=(-3, 1), velocity=(0.1, 0))
-    w.add_spring(hexa, None, anchor_b=(-1.5, 2.0), stiffness=50.0, damping=0.5)
-    return w
+class _Counter:
+    """Kernels compiled in this process (numba's compile events) and the one compiling now."""
+
+    def __init__(self):
+        self.n = 0
+        self.label = ""
+        listen(self._start, self._end)
+
+    def _start(self, name):
+        self.label = name
+
+    def _end(self, name):
+        self.n += 1
+
+
+_COUNTER = None
 
 
 class Warmup:
-    def __init__(self, world, lock: threading.Lock):
+    """``Warmup(world, lock)``; ``start()`` begins.  ``lock`` is the physics lock the simulation
+    steps under (a kernel first called here compiles or loads under it)."""
+
+    def __init__(self, world, lock: threading.Lock, helper: bool = True):
+        global _COUNTER
+        if _COUNTER is None:
+            _COUNTER = _Counter()
+        self.counter = _COUNTER
         self.lock = lock
-        first, integ = world.solver, world.integrator
-        self.stages: list[tuple[str, dict]] = []
-        for bp in ("brute", "sweep", "quadtree"):
-            for npz in ("sat", "gjk"):
-                self.stages.append((f"{first}: {bp} + {npz}",
-                                    dict(solver=first, broadphase=bp, narrowphase=npz, integrator=integ)))
-        self.gate = len(self.stages)   # the scene may run once these are done
-        self.done = 0
-        self.warmed: set[tuple[str, str]] = set()
-        self._cv = threading.Condition()
-        self._queue = list(self.stages)
-        self._busy = False
-        self.label = "starting"
+        self.solver, self.integrator = world.solver, world.integrator
+        self.broadphase = compile_units.broadphase_of(world)
+        self.key = (self.solver, self.integrator, self.broadphase)
+        self.cache = compile_units.cache_dir()
+        mine, theirs = compile_units.gate_units(*self.key)
+        self.final = "step:" + ":".join(self.key)
+        background = [u for u in compile_units.background_units(*self.key) if not self.cached(u)]
+        if all(self.cached(u) for u in mine + theirs + [self.final]):
+            mine, theirs = mine + theirs, []          # all on disk: loading here is quicker
+        self.mine, self.theirs = mine, theirs
+        self.helper = CompileHelper(self._changed) if helper and (theirs or background) else None
+        # when the helper is done with its share first, it takes this process's last units
+        self._initial_queue = theirs + mine[:0:-1] + background
+        self.expected = self._expected(mine + theirs + [self.final])
+        self.kernels0 = self.counter.n
+        self.warmed: set[tuple[str, str, str]] = set()
         self.errors: list[str] = []
+        self.label = "starting"
+        self.stage = "starting"
         self.t0 = time.monotonic()
         self.t_gate = None
+        self._ready = False
+        self._cv = threading.Condition()
+        self._wanted: list[tuple[str, str, str]] = []
+        self._busy = True
         self.thread = threading.Thread(target=self._run, name="kernel-warmup", daemon=True)
 
+    # -- the marker files and the expected counts -----------------------------------------
+    @staticmethod
+    def cached(unit: str) -> bool:
+        return compile_units.cached(unit)
+
+    def _counts_path(self):
+        return None if self.cache is None else self.cache.parent / "kernel_counts.json"
+
+    def _expected(self, units) -> int:
+        """Kernels the gate will compile: what the last cold launch of this cache root compiled,
+        else DEFAULT_COUNTS; 0 when every unit is in the cache."""
+        todo = [u for u in units if not self.cached(u)]
+        if not todo:
+            return 0
+        try:
+            return int(json.loads(self._counts_path().read_text())["total"])
+        except (OSError, ValueError, KeyError, TypeError, AttributeError):
+            return sum(DEFAULT_COUNTS.get(u.split(":")[0], 0) for u in todo)
+
+    # -- running -----------------------------------------------------------------------
     def start(self):
+        if self.helper is not None:
+            self.helper.queue = list(self._initial_queue)
+            self.helper.start()
         self.thread.start()
         return self
 
-    def prioritize(self, solver: str, integrator: str) -> None:
-        """Compile this mode next (the user just switched to it)."""
-        with self._cv:
-            if (solver, integrator) in self.warmed:
-                return
-            if any(s[1]["solver"] == solver and s[1]["integrator"] == integrator for s in self._queue):
-                return
-            self._queue.append((f"{solver}: {integrator}", dict(solver=solver, integrator=integrator)))
-            self._cv.notify()
+    def close(self) -> None:
+        """Stop the helper process (the sandbox is closing)."""
+        if self.helper is not None:
+            self.helper.close()
 
-    def can_step(self, solver: str, integrator: str) -> bool:
-        return self.ready and (solver, integrator) in self.warmed
+    def _changed(self):
+        with self._cv:
+            self._cv.notify_all()
+
+    def _unit(self, unit: str) -> None:
+        """Compile or load ``unit`` here, under the physics lock."""
+        self.stage = unit
+        try:
+            with compile_units.unit_lock(unit), self.lock:
+                compile_units.run(unit)
+        except Exception as exc:  # noqa: BLE001  (a broken mode must not stop the others)
+            self.errors.append(f"{unit}: {exc}")
+            traceback.print_exc()
+        else:
+            compile_units.mark(unit)
+
+    def _wait_helper(self, units) -> None:
+        """Wait until the helper settled ``units``; compile here the ones it could not."""
+        units = [u for u in units if not compile_units.cached(u)]
+        if self.helper is None:
+            for u in units:
+                self._unit(u)
+            return
+        for u in units:
+            self.helper.push(u, first=True)
+        with self._cv:
+            self._cv.wait_for(lambda: all(self.helper.settled(u) for u in units))
+        for u in units:
+            if u not in self.helper.done:
+                self._unit(u)     # the helper failed or died: compile it here
 
     def _run(self):
+        t_cold = self.counter.n
+        pending = []
+        for u in self.mine:
+            if self.helper is None or self.helper.claim(u):
+                self._unit(u)
+            else:
+                pending.append(u)      # the helper got there first
+        self.stage = "waiting for the other core"
+        self._wait_helper(self.theirs + pending)
+        self._unit(self.final)
+        self._save_counts(self.counter.n - t_cold)
+        self.warmed.add(self.key)
+        self.t_gate = time.monotonic() - self.t0
+        self._ready = True
+        self._serve()
+
+    def _save_counts(self, compiled_here: int) -> None:
+        """Remember how many kernels this cold launch compiled (the next version's progress bar)."""
+        path = self._counts_path()
+        if path is None or self.expected == 0 or not (self.theirs or compiled_here):
+            return
+        try:
+            path.write_text(json.dumps({"total": compiled_here + self._helper_kernels()}))
+        except OSError:
+            pass
+
+    def _serve(self):
+        """After the gate: load the modes the user switches to (``prioritize``) and the quadtree
+        overlay's kernels, each once the helper has them in the cache."""
+        extras = self.helper is not None and "extras" in self._initial_queue
         while True:
             with self._cv:
-                while not self._queue:
-                    self._busy = False
-                    self._cv.wait()
-                label, cfg = self._queue.pop(0)
+                self._busy = False
+                self._cv.wait_for(lambda: self._wanted or (extras and self.helper.settled("extras")))
                 self._busy = True
-            self.label = label
-            try:
-                with self.lock:
-                    w = _probe_world(cfg["solver"])
-                    for k, v in cfg.items():
-                        if k != "solver":
-                            setattr(w, k, v)
-                    for _ in range(3):
-                        w.step()
-                    w.render_data()
-                    w.quadtree_cells()
-                    w.query_point((0.0, 0.5))
-                    w.contacts()
-            except Exception as exc:  # noqa: BLE001  (a broken mode must not stop the others)
-                self.errors.append(f"{label}: {exc}")
-                traceback.print_exc()
-            with self._cv:
-                self.warmed.add((cfg["solver"], cfg["integrator"]))
-                self.done += 1
-                if self.done == self.gate:
-                    self.t_gate = time.monotonic() - self.t0
-                if not self._queue:
-                    self._busy = False
+                key = self._wanted.pop(0) if self._wanted else None
+            if key is None:
+                extras = False
+                self._unit("extras")
+                continue
+            solver, integrator, bp = key
+            self.label = f"{solver} ({integrator})"
+            self._wait_helper([f"solve:{solver}:{integrator}", f"broad:{bp}"])
+            self._unit("step:" + ":".join(key))
+            self.warmed.add(key)
+
+    # -- what the window asks --------------------------------------------------------
+    def prioritize(self, solver: str, integrator: str, broadphase: str | None = None) -> None:
+        """Make this mode ready next (the user just switched to it)."""
+        key = (solver, integrator, broadphase or self.broadphase)
+        with self._cv:
+            if key in self.warmed or key in self._wanted:
+                return
+            self._wanted.append(key)
+            self._cv.notify_all()
+
+    def can_step(self, solver: str, integrator: str, broadphase: str | None = None) -> bool:
+        """Are the kernels of this mode loaded here (a step will not stop to compile)?"""
+        return self._ready and (solver, integrator, broadphase or self.broadphase) in self.warmed
 
     @property
     def ready(self) -> bool:
-        """The open scene can run (its kernels are compiled)."""
-        return self.done >= self.gate
+        """The open scene can run (its kernels are loaded)."""
+        return self._ready
 
     @property
     def busy(self) -> bool:
-        return self._busy or bool(self._queue)
+        """Is this process compiling or loading (the window leaves it the interpreter)?"""
+        return self._busy
 
     @property
     def finished(self) -> bool:
-        return self.ready and not self.busy
+        return self._ready and not self._busy and not (self.helper is not None and self.helper.busy())
+
+    def _helper_kernels(self) -> int:
+        """Kernels the helper compiled for the gate (its background units do not count)."""
+        return self.helper.kernels_for(self.theirs + self.mine) if self.helper is not None else 0
+
+    def kernels_compiled(self) -> int:
+        """Kernels compiled so far for this launch, in both processes."""
+        return self.counter.n - self.kernels0 + self._helper_kernels()
 
     def progress(self):
-        return min(1.0, self.done / max(1, self.gate)), self.label
+        """(fraction 0..1 of the open scene's kernels compiled, what is being compiled)."""
+        if self._ready:
+            return 1.0, "ready"
+        done = self.kernels_compiled()
+        frac = min(0.99, done / self.expected) if self.expected else 0.5
+        here = self.counter.label.rsplit(".", 1)[-1]
+        there = self.helper.label.rsplit(".", 1)[-1] if self.helper is not None else ""
+        label = " | ".join(x for x in (here, there) if x) or self.stage
+        return frac, f"{done} kernels compiled: {label}"
 
     def elapsed(self) -> float:
         return time.monotonic() - self.t0

@@ -12,7 +12,7 @@ from imgui_bundle import imgui, implot
 from imgui_bundle.python_backends.pyglet_backend import create_renderer
 from OpenGL import GL
 
-from . import framing
+from . import compile_units, framing
 from .autosave import Autosaver
 from .bound import WorldBound
 from .camera import Camera
@@ -26,6 +26,8 @@ from .notices import Notices
 from .probes import Recorder
 from .panels import Panels, apply_style
 from .panels.notes import overlay_note
+from .preview import PreviewWorld
+from .preview import render_data as preview_render_data
 from .render import Overlays, Renderer
 from .scenes import initial_world
 from .simulation import Simulation
@@ -72,7 +74,8 @@ class Sandbox(pyglet.window.Window):
             path = None
         self.editor = Editor(world, path, self.notices, self.camera)
         self.bound = WorldBound()
-        self._scene_pending = "new"     # the next ready frame sets the bound and frames the scene
+        self._scene_pending = "new"     # the next frame frames the scene (and, once ready, sets the bound)
+        self._preview_key = self._preview_rd = None
         lock = threading.Lock()
         self.warmup = Warmup(world, lock)
         self.sim = Simulation(self.editor, self.warmup, self.notices, paused=paused, lock=lock)
@@ -117,8 +120,9 @@ class Sandbox(pyglet.window.Window):
         self._mode_changed(world.solver, world.integrator)
 
     def _mode_changed(self, solver, integrator):
-        if not self.warmup.can_step(solver, integrator):
-            self.warmup.prioritize(solver, integrator)
+        bp = compile_units.broadphase_of(self.world)
+        if not self.warmup.can_step(solver, integrator, bp):
+            self.warmup.prioritize(solver, integrator, bp)
 
     # -- where the scene is shown ------------------------------------------------------
     def panel_rects(self):
@@ -164,14 +168,14 @@ class Sandbox(pyglet.window.Window):
             phys_ms += (time.perf_counter() - t_cmp) * 1e3
             self.input.update_hover()
             upload_ms = self.build_scene(rd)
+        else:
+            upload_ms = self.preview_scene()
         t_draw = time.perf_counter()
         fw, fh = self.get_framebuffer_size()
         if ready:
             self.compare_view.draw(fw, fh)
         else:
-            GL.glViewport(0, 0, fw, fh)
-            GL.glClearColor(0.06, 0.07, 0.095, 1.0)
-            GL.glClear(GL.GL_COLOR_BUFFER_BIT)
+            self.renderer.draw(self.camera, fw, fh)
         if PROFILE:
             GL.glFinish()
         draw_ms = (time.perf_counter() - t_draw) * 1e3   # + the buffer swap, added by the loop
@@ -190,13 +194,26 @@ class Sandbox(pyglet.window.Window):
         self._update_caption()
         self.frame_no += 1
 
+    def preview_scene(self) -> float:
+        """Before the kernels are ready: the scene as it stands (paused), framed, from numpy render
+        data (``app.preview``); returns the upload ms."""
+        if self._scene_pending == "new":
+            framing.frame_scene(self.camera, PreviewWorld(self.world), self.free_regions())
+            self._scene_pending = "framed"
+        if self._preview_key != (self.editor.doc.history.version, id(self.world)):
+            self._preview_key = (self.editor.doc.history.version, id(self.world))
+            self._preview_rd = preview_render_data(self.world)
+        return self.build_scene(self._preview_rd, sim_overlays=False)
+
     def prepare_scene(self):
         """The first ready frame of a new document: the world bound from the scene's extent and
         the camera; after a reset only who is inside the bound (the view and the bound stay)."""
         if self._scene_pending is None:
             return
         rd = self.world.render_data()
-        if self._scene_pending == "new":
+        if self._scene_pending == "framed":      # framed by the preview: the same render data
+            self.bound.fit_scene(rd)
+        elif self._scene_pending == "new":
             self.bound.fit_scene(rd)
             self.frame_scene()
         else:
@@ -219,16 +236,18 @@ class Sandbox(pyglet.window.Window):
                             f"{'was' if n == 1 else 'were'} removed (Ctrl+Z brings {'it' if n == 1 else 'them'} back)")
         return self.world.render_data()
 
-    def build_scene(self, rd=None) -> float:
-        """The world's render data -> the renderer's vertex buffers; returns the upload ms."""
+    def build_scene(self, rd=None, sim_overlays=True) -> float:
+        """The world's render data -> the renderer's vertex buffers; returns the upload ms.
+        ``sim_overlays``: False before the kernels are ready (no velocity or quadtree overlays)."""
         rd = self.world.render_data() if rd is None else rd
         self.rd_ids = rd.ids
         decor = self.editor.decor()
         if self.bound.shown:
             for a, b in self.bound.outline():
                 decor.segments.append((a, b, 1.5, BOUND_COLOR))
-        velocities = self.sim.body_velocities(rd) if self.overlays.velocities else None
-        quadtree = self.sim.quadtree_cells(self._quadtree_failed) if self.overlays.quadtree else None
+        velocities = self.sim.body_velocities(rd) if self.overlays.velocities and sim_overlays else None
+        quadtree = self.sim.quadtree_cells(self._quadtree_failed) if self.overlays.quadtree and sim_overlays \
+            else None
         spring_ids = np.array([s.id for s in self.world.springs], dtype=np.int64) \
             if (decor.hidden_springs or decor.selected_springs) else None
         if np.all(np.isfinite(rd.vertices)) and np.all(np.isfinite(rd.center)):

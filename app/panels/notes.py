@@ -39,16 +39,17 @@ def overlay_note(app, text):
 
 
 def progress_window(app):
-    """The compile progress of the open scene's kernels, centred."""
+    """The compile progress of the open scene's kernels, at the bottom centre."""
     io = imgui.get_io()
     w, h = io.display_size.x, io.display_size.y
-    imgui.set_next_window_pos(imgui.ImVec2(w * 0.5, h * 0.5), imgui.Cond_.always.value, imgui.ImVec2(0.5, 0.5))
-    imgui.set_next_window_size(imgui.ImVec2(460, 0), imgui.Cond_.always.value)
+    # at the bottom: the scene above it is already drawn (paused) while its kernels compile
+    imgui.set_next_window_pos(imgui.ImVec2(w * 0.5, h - 24), imgui.Cond_.always.value, imgui.ImVec2(0.5, 1.0))
+    imgui.set_next_window_size(imgui.ImVec2(560, 0), imgui.Cond_.always.value)
     flags = (imgui.WindowFlags_.no_decoration | imgui.WindowFlags_.no_move |
              imgui.WindowFlags_.no_saved_settings).value
     imgui.begin("##progress", None, flags)
     imgui.text("Stelkropp")
-    imgui.text_colored(DIM, "Compiling the physics kernels (first launch only) ...")
+    imgui.text_colored(DIM, "Compiling the physics kernels (first launch only); the scene starts when done")
     frac, label = app.warmup.progress()
     dots = "." * (1 + int(time.monotonic() * 2) % 3)
     imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")

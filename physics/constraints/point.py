@@ -27,18 +27,23 @@ from .._jit import kernel
 POINT_FIELDS = ("ra", "rb", "mass_n", "mass_t", "vn0", "mu")
 
 
-_TYPES: dict = {}
+def point_type(name: str, module: str, extra=()):
+    """The namedtuple type of a solver's point rows: POINT_FIELDS plus ``extra`` (name, dtype).
+
+    Define it once, at module level of ``module`` (the caller's ``__name__``) under the same
+    ``name``: numba's disk cache pickles the argument types of each kernel, and a type that
+    pickle cannot find by module and name is pickled by value and comes back as a new class
+    in the next process, so every launch would miss the cache and compile again."""
+    tup = namedtuple(name, list(POINT_FIELDS) + [k for k, _ in extra], module=module)
+    tup._shapes = {"ra": ((2, 2), np.float64), "rb": ((2, 2), np.float64),
+                   **{k: ((2,), np.float64) for k in POINT_FIELDS[2:]},
+                   **{k: ((2,), dt) for k, dt in extra}}
+    return tup
 
 
-def point_rows(name: str, cap: int, extra=()):
-    """Scratch rows for ``cap`` manifolds: POINT_FIELDS plus ``extra`` (name, dtype) per point.
-
-    One namedtuple type per ``name`` (a new type would make numba compile anew)."""
-    fields = {"ra": ((2, 2), np.float64), "rb": ((2, 2), np.float64),
-              **{k: ((2,), np.float64) for k in POINT_FIELDS[2:]},
-              **{k: ((2,), dt) for k, dt in extra}}
-    tup = _TYPES.setdefault(name, namedtuple(name, list(fields)))
-    return tup(**{k: np.zeros((cap,) + shp, dtype=dt) for k, (shp, dt) in fields.items()})
+def point_rows(tup, cap: int):
+    """Zeroed scratch rows of the point-row type ``tup`` (see ``point_type``) for ``cap`` manifolds."""
+    return tup(**{k: np.zeros((cap,) + shp, dtype=dt) for k, (shp, dt) in tup._shapes.items()})
 
 
 @kernel

@@ -21,14 +21,15 @@ import math
 import numpy as np
 
 from ..._jit import kernel
-from ...constraints.point import point_rows, rel_velocity
+from ...constraints.point import point_rows, point_type, rel_velocity
 
 INACTIVE, IMPULSE, PENALTY = 0, 1, 2
+ClassicPoints = point_type("ClassicPoints", __name__, extra=(("role", np.int8), ("target", np.float64)))
 
 
 def classic_points(cap: int):
     """Point rows for ``cap`` manifolds (see the module doc)."""
-    return point_rows("ClassicPoints", cap, extra=(("role", np.int8), ("target", np.float64)))
+    return point_rows(ClassicPoints, cap)
 
 
 @kernel

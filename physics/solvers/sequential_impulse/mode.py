@@ -5,7 +5,7 @@ from collections import namedtuple
 
 import numpy as np
 
-from ...constraints.point import point_rows
+from ...constraints.point import point_rows, point_type
 from ...settings import Setting, declare
 from ..base import SolverMode
 from .kernel import BAUMGARTE, SPLIT, si_step
@@ -16,6 +16,8 @@ assert CORRECTIONS.index("baumgarte") == BAUMGARTE and CORRECTIONS.index("split_
 # displacements since the step began (DP, DQ and its cos/sin DC, DS) and the pseudo-velocities
 # of the split impulses (VP, WP)
 Motion = namedtuple("Motion", "DP DQ DC DS VP WP")
+# per point: the velocity bias and the split impulses' accumulated pseudo impulse
+SIPoints = point_type("SIPoints", __name__, extra=(("bias", np.float64), ("jp", np.float64)))
 
 
 class SequentialImpulse(SolverMode):
@@ -47,8 +49,7 @@ class SequentialImpulse(SolverMode):
                         np.zeros((cap, 2)), np.zeros(cap))
 
     def _alloc_rows(self, cap):
-        # per point: the velocity bias and the split impulses' accumulated pseudo impulse
-        self.W = point_rows("SIPoints", cap, extra=(("bias", np.float64), ("jp", np.float64)))
+        self.W = point_rows(SIPoints, cap)
 
     def derive(self, ctx, par, store):
         par.set("inv_dt", 1.0 / ctx.get("dt"))

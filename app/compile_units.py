@@ -1,0 +1,164 @@
+"""The compile units of the sandbox's first launch: which kernels each one compiles, on a probe world.
+
+numba compiles a kernel (and every kernel it calls) on its first call and keeps it in its disk
+cache.  A step runs three independent groups of kernels (docs/internals.md): the collision stages
+(one broad phase and the narrow phase), the solver mode's step, and the rest of the frame (geometry,
+islands, contacts, picking, drawing).  Each unit here calls one group's entry points on a small
+throwaway world, so two processes can fill the cache at once, each with its own group, and the
+sandbox loads the other's from disk.  Calling a stage out of order on a probe world is fine: only
+the argument types matter to the compiler, the results are thrown away.
+
+Unit names: ``broad:<broadphase>``, ``narrow``, ``solve:<solver>:<integrator>``, ``frame``, ``extras``
+(the quadtree overlay), ``step:<solver>:<integrator>:<broadphase>`` (a whole step: what is left).
+"""
+from __future__ import annotations
+
+import physics
+from physics import options
+from physics.collision import broadphase, narrowphase
+
+
+def probe_world(solver: str, integrator: str = options.DEFAULT_INTEGRATOR, broadphase: str = "brute"):
+    """A small world with every body kind, both shape kinds, polygons of two vertex counts and a
+    spring to the world, so each stage meets every argument type a scene can give it."""
+    w = physics.World(solver=solver, integrator=integrator, broadphase=broadphase)
+    w.add_body(physics.Polygon.box(10, 1), kind="static", position=(0, -0.5))
+    w.add_body(physics.Polygon.box(1, 1), position=(0, 0.49))
+    w.add_body(physics.Polygon.box(1, 1), position=(0.2, 1.5), angle=0.1)
+    w.add_body(physics.Circle(0.4), position=(1.5, 0.45))
+    w.add_body(physics.Circle(0.4), position=(1.6, 1.3))
+    hexa = w.add_body(physics.Polygon.regular(6, 0.5), position=(-1.5, 0.45))
+    w.add_body(physics.Polygon.box(0.5, 0.5), kind="kinematic", position=(-3, 1), velocity=(0.1, 0))
+    w.add_spring(hexa, None, anchor_b=(-1.5, 2.0), stiffness=50.0, damping=0.5)
+    return w
+
+
+def _broad(bp):
+    w = probe_world(options.DEFAULT_SOLVER, broadphase=bp)
+    w._pipeline.refresh_geometry(w, w.dt)
+    broadphase.find_pairs(w._store.bodies.view, w._store.bodies.n, bp, w._pipeline._pairs)
+
+
+def _narrow():
+    w = probe_world(options.DEFAULT_SOLVER)
+    p, s = w._pipeline, w._store
+    p._refresh(w, w.dt)
+    p.refresh_geometry(w, w.dt)
+    # no pairs: numba compiles for the argument types, so the broad phase is not needed here
+    narrowphase.collide(p.ctx, s.bodies.view, s.verts.view, p._pairs, 0, s.contacts)
+
+
+def _solve(solver, integrator):
+    w = probe_world(solver, integrator)
+    p = w._pipeline
+    p._refresh(w, w.dt)
+    p.solve(w, w.dt)
+
+
+def _frame():
+    w = probe_world(options.DEFAULT_SOLVER)
+    p = w._pipeline
+    p._refresh(w, w.dt)
+    w.render_data()
+    p.sleep(w, w.dt)
+    w.contacts()
+    w.query_point((0.0, 0.5))
+
+
+def _extras():
+    probe_world(options.DEFAULT_SOLVER).quadtree_cells()
+
+
+def _step(solver, integrator, bp):
+    w = probe_world(solver, integrator, bp)
+    for _ in range(3):
+        w.step()
+    w.render_data()
+    w.contacts()
+    w.query_point((0.0, 0.5))
+
+
+def run(unit: str) -> None:
+    """Compile (or load from the cache) the kernels of ``unit``; ValueError for an unknown name."""
+    kind, *args = unit.split(":")
+    fn = {"broad": _broad, "narrow": _narrow, "solve": _solve, "frame": _frame, "extras": _extras, "step": _step}.get(kind)
+    if fn is None:
+        raise ValueError(f"unknown compile unit {unit!r}")
+    fn(*args)
+
+
+def gate_units(solver: str, integrator: str, broadphase: str) -> tuple[list[str], list[str]]:
+    """What the open scene needs before it can run, split in two: (this process's units, the
+    helper's).  The narrow phase is the largest single group (about as much as the solver and the
+    frame together: measured with numba's compile events, default scene), so the helper takes it;
+    this process takes the solver, the frame and the broad phase."""
+    return [f"solve:{solver}:{integrator}", "frame", f"broad:{broadphase}"], ["narrow"]
+
+
+def background_units(solver: str, integrator: str, broadphase: str) -> list[str]:
+    """Everything else the sandbox can switch to, the likeliest first: the other broad phases,
+    the quadtree overlay, then the other solver modes."""
+    out = [f"broad:{bp}" for bp in ("brute", "sweep", "quadtree") if bp != broadphase]
+    out.append("extras")
+    out += [f"solve:{s}:{integrator}" for s in options.SOLVERS if s != solver]
+    return out
+
+
+def cache_dir():
+    """numba's cache directory for this version of ``physics/`` (None when caching is off)."""
+    from pathlib import Path
+
+    import numba.core.config as cfg
+    return Path(cfg.CACHE_DIR) if cfg.CACHE_DIR else None
+
+
+def _marker(unit: str):
+    d = cache_dir()
+    return None if d is None else d / f"unit-{unit.replace(':', '-')}.ok"
+
+
+def cached(unit: str) -> bool:
+    """Has ``unit`` been compiled into this cache (a marker file beside numba's)?"""
+    m = _marker(unit)
+    return m is not None and m.exists()
+
+
+def mark(unit: str) -> None:
+    """Note that ``unit``'s kernels are in the cache (the cache directory is keyed on the physics
+    sources, so the marker goes with them)."""
+    m = _marker(unit)
+    if m is not None:
+        try:
+            m.write_text("")
+        except OSError:
+            pass
+
+
+class unit_lock:
+    """``with unit_lock(unit):`` one process at a time compiles ``unit`` into this cache (an
+    advisory file lock: two sandboxes started together would otherwise both compile it; the
+    second then loads it from the cache).  A no-op where file locks are unavailable."""
+
+    def __init__(self, unit: str):
+        m = _marker(unit)
+        self.path = None if m is None else m.with_suffix(".lock")
+        self._f = None
+
+    def __enter__(self):
+        try:
+            import fcntl
+            self._f = open(self.path, "w")
+            fcntl.flock(self._f, fcntl.LOCK_EX)
+        except (ImportError, OSError, TypeError):
+            self._f = None
+        return self
+
+    def __exit__(self, *exc):
+        if self._f is not None:
+            self._f.close()      # closing releases the lock
+
+
+def broadphase_of(world) -> str:
+    """The broad phase ``world``'s next step runs ("auto" resolved by its body count)."""
+    from physics.collision.broadphase import resolve
+    return resolve(world.broadphase, world._store.bodies.n)

@@ -1,0 +1,76 @@
+"""The scene drawn before any kernel is compiled: render data in plain numpy.
+
+``world.render_data()`` refreshes world-space vertices with a numba kernel, which a cold first
+launch has not compiled yet.  ``render_data(world)`` computes the same arrays with numpy from the
+world's store (vertex i of a polygon: x + R(q) local_i; the AABBs unfattened, as the world's own
+refresh gives them with dt = 0 plus half the speculative margin) and writes nothing into the
+world.  ``PreviewWorld`` hands these to code that asks a world for its render data (the camera
+framing), so the first frame shows the scene, framed, while the kernels compile.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from physics.store import CIRCLE
+from physics.views import RenderData
+
+
+def render_data(world) -> RenderData:
+    """The world's render data (same fields as ``world.render_data()``), without kernels."""
+    st = world._store
+    n = st.bodies.n
+    B = st.bodies.view
+    V = st.verts.view
+    top = st.verts.top
+    body_of = np.repeat(np.arange(n), B.vcount[:n])
+    rows = np.concatenate([np.arange(s, s + c) for s, c in zip(B.vstart[:n], B.vcount[:n])]) \
+        if n else np.zeros(0, np.int64)
+    verts = np.zeros((top, 2))
+    if len(rows):
+        q = B.q[body_of]
+        c, s = np.cos(q), np.sin(q)
+        loc = V.local[rows]
+        verts[rows, 0] = B.x[body_of, 0] + c * loc[:, 0] - s * loc[:, 1]
+        verts[rows, 1] = B.x[body_of, 1] + s * loc[:, 0] + c * loc[:, 1]
+    aabb = np.zeros((n, 4))
+    half = 0.5 * world.speculative_distance
+    for i in range(n):
+        if B.shape[i] == CIRCLE:
+            r = B.radius[i]
+            lo, hi = B.x[i] - r, B.x[i] + r
+        else:
+            v = verts[B.vstart[i]:B.vstart[i] + B.vcount[i]]
+            lo, hi = v.min(0), v.max(0)
+        aabb[i, :2], aabb[i, 2:] = lo - half, hi + half
+    ends = _spring_ends(B, st.springs.view, st.springs.n)
+    return RenderData(verts, B.vstart[:n], B.vcount[:n], B.kind[:n], B.awake[:n], B.shape[:n], B.radius[:n],
+                      B.x[:n], B.q[:n], B.com[:n], B.id[:n], aabb, ends, np.zeros((0, 2)), np.zeros((0, 2)))
+
+
+def _spring_ends(B, S, ns):
+    ends = np.zeros((ns, 2, 2))
+    if not ns:
+        return ends
+
+    def anchor(slots, local):
+        q = B.q[slots]
+        c, s = np.cos(q), np.sin(q)
+        return B.x[slots] + np.stack([c * local[:, 0] - s * local[:, 1], s * local[:, 0] + c * local[:, 1]], 1)
+
+    ends[:, 0] = anchor(S.a[:ns], S.la[:ns])
+    ends[:, 1] = np.where((S.b[:ns] < 0)[:, None], S.lb[:ns], anchor(np.maximum(S.b[:ns], 0), S.lb[:ns]))
+    return ends
+
+
+class PreviewWorld:
+    """``world`` as seen before its kernels exist: ``render_data()`` from numpy, everything else
+    the world's own."""
+
+    def __init__(self, world):
+        self._world = world
+
+    def render_data(self) -> RenderData:
+        return render_data(self._world)
+
+    def __getattr__(self, name):
+        return getattr(self._world, name)

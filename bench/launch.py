@@ -1,0 +1,154 @@
+"""``python -m bench.launch``: how long a new user waits, in a real sandbox window under Xvfb.
+
+Starts ``python -m app SCENE`` (a real window; Xvfb is started when DISPLAY is unset), reads the
+status file it writes every other frame, and prints, from the process start:
+
+- ``drawn``: the first frame is on screen (the sandbox draws the scene, paused, before any
+  kernel is compiled; an older sandbox drew nothing until its kernels were ready, so for it this
+  is the same moment as ``ready``);
+- ``ready``: the open scene's kernels are loaded;
+- ``playing``: the world has taken its first step.
+
+``cold`` runs with an empty cache directory (``STELKROPP_CACHE_DIR``, fresh each repeat);
+``cached`` right after it with the same directory.  The machine's load average (``uptime``) is
+printed with every run: on a shared machine the absolute times mean little without it, so
+``--app-root`` runs another checkout's sandbox interleaved with this one (before/after ratios).
+
+    python -m bench.launch                       # cold, then cached, scenes/default.json
+    python -m bench.launch --phases cached --repeat 3
+    python -m bench.launch --app-root /work/main --repeat 1    # interleaved with main's sandbox
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from .paths import ROOT
+
+
+def load() -> str:
+    """The 1-minute load average and the core count (shared machines: read times with it)."""
+    return f"load {os.getloadavg()[0]:.2f} on {os.cpu_count()} cores"
+
+
+def _start_xvfb():
+    for n in range(160, 400):
+        if not Path(f"/tmp/.X11-unix/X{n}").exists() and not Path(f"/tmp/.X{n}-lock").exists():
+            proc = subprocess.Popen(["Xvfb", f":{n}", "-screen", "0", "1280x800x24", "-nolisten", "tcp"],
+                                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            t0 = time.monotonic()
+            while not Path(f"/tmp/.X11-unix/X{n}").exists():
+                if proc.poll() is not None or time.monotonic() - t0 > 20:
+                    raise RuntimeError(f"Xvfb :{n} did not start")
+                time.sleep(0.05)
+            return proc, f":{n}"
+    raise RuntimeError("no free X display number")
+
+
+def _status(path: Path) -> dict:
+    try:
+        return json.loads(path.read_text())
+    except (OSError, ValueError):
+        return {}
+
+
+def launch_once(app_root: Path, scene: str, cache: Path, display: str, timeout: float) -> dict:
+    """One sandbox launch; seconds from the process start to drawn / ready / playing."""
+    with tempfile.TemporaryDirectory(prefix="stelkropp-launch-") as tmp:
+        st_path = Path(tmp) / "status.json"
+        env = dict(os.environ, DISPLAY=display, STELKROPP_CACHE_DIR=str(cache), XDG_DATA_HOME=tmp,
+                   XDG_STATE_HOME=tmp)
+        env.pop("NUMBA_CACHE_DIR", None)
+        cmd = [sys.executable, "-m", "app", scene, "--position", "0,0", "--size", "1280x800",
+               "--status", str(st_path), "--no-autosave-offer"]
+        out = {"load_before": load()}
+        t0 = time.monotonic()
+        proc = subprocess.Popen(cmd, cwd=app_root, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                                text=True)
+        try:
+            while time.monotonic() - t0 < timeout:
+                if proc.poll() is not None:
+                    out["error"] = f"exited {proc.returncode}: {proc.stderr.read()[-800:]}"
+                    break
+                st = _status(st_path)
+                t = time.monotonic() - t0
+                if st.get("frame", 0) >= 1:
+                    out.setdefault("drawn", t)
+                    out.setdefault("progress_seen", [])
+                    if "progress" in st and len(out["progress_seen"]) < 400:
+                        out["progress_seen"].append(round(st["progress"], 3))
+                if st.get("ready"):
+                    out.setdefault("ready", t)
+                if st.get("ready") and st.get("steps", 0) > 0:
+                    out["playing"] = t
+                    break
+                time.sleep(0.05)
+            else:
+                out["error"] = f"not playing after {timeout:.0f} s"
+        finally:
+            proc.terminate()
+            try:
+                proc.wait(10)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+        seen = out.pop("progress_seen", [])
+        out["progress_values"] = len(set(seen))
+        out["load_after"] = load()
+        return out
+
+
+def _fmt(r: dict) -> str:
+    if "error" in r:
+        return f"ERROR {r['error']}"
+    parts = [f"{k} {r[k]:6.1f} s" for k in ("drawn", "ready", "playing") if k in r]
+    return "  ".join(parts) + f"  ({r['progress_values']} progress values)  [{r['load_before']} -> {r['load_after']}]"
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m bench.launch", description=__doc__.split("\n\n")[0])
+    ap.add_argument("--scene", default="scenes/default.json")
+    ap.add_argument("--phases", default="cold,cached", help="comma list of cold, cached")
+    ap.add_argument("--repeat", type=int, default=1)
+    ap.add_argument("--app-root", action="append", default=[],
+                    help="also launch this checkout's sandbox, interleaved (repeatable)")
+    ap.add_argument("--timeout", type=float, default=1500)
+    ap.add_argument("--json", default=None, help="write the results here")
+    args = ap.parse_args(argv)
+    roots = [ROOT] + [Path(r).resolve() for r in args.app_root]
+    xvfb = None
+    display = os.environ.get("DISPLAY")
+    if not display:
+        xvfb, display = _start_xvfb()
+    results = []
+    try:
+        for rep in range(args.repeat):
+            for root in roots:
+                cache = Path(tempfile.mkdtemp(prefix="stelkropp-launch-cache-"))
+                try:
+                    phases = args.phases.split(",")
+                    if phases[0] == "cached":      # fill the cache first (not reported)
+                        launch_once(root, args.scene, cache, display, args.timeout)
+                    for phase in phases:
+                        r = launch_once(root, args.scene, cache, display, args.timeout)
+                        r.update(root=str(root), phase=phase, repeat=rep)
+                        results.append(r)
+                        print(f"{root.name:>12} {phase:>6}: {_fmt(r)}", flush=True)
+                finally:
+                    shutil.rmtree(cache, ignore_errors=True)
+    finally:
+        if xvfb is not None:
+            xvfb.terminate()
+    if args.json:
+        Path(args.json).write_text(json.dumps(results, indent=1))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
