@@ -29,6 +29,7 @@ from .compile_helper import CompileHelper
 from .compile_worker import listen
 
 # kernels a cold launch compiles per unit (measured on this code; only the progress bar uses it)
+FIRST_FRAME_WAIT = 10.0   # s: compile here after the first frame, or after this without a window
 DEFAULT_COUNTS = {"solve": 40, "frame": 25, "broad": 15, "narrow": 40, "step": 6}
 
 
@@ -85,6 +86,7 @@ class Warmup:
         self._cv = threading.Condition()
         self._wanted: list[tuple[str, str, str]] = []
         self._busy = True
+        self._drawn = threading.Event()
         self.thread = threading.Thread(target=self._run, name="kernel-warmup", daemon=True)
 
     # -- the marker files and the expected counts -----------------------------------------
@@ -150,7 +152,13 @@ class Warmup:
             if u not in self.helper.done:
                 self._unit(u)     # the helper failed or died: compile it here
 
+    def frame_drawn(self) -> None:
+        """The window has drawn its first frame: this process may start compiling (the helper
+        started at once; a compile here would hold the interpreter lock the first frame needs)."""
+        self._drawn.set()
+
     def _run(self):
+        self._drawn.wait(FIRST_FRAME_WAIT)
         t_cold = self.counter.n
         pending = []
         for u in self.mine:

@@ -192,6 +192,8 @@ class Sandbox(pyglet.window.Window):
         if ready:
             self.autosaver.tick(self.editor.doc, busy=self.editor.tools["select"].joint is not None)
         self._update_caption()
+        if self.frame_no == 1:
+            self.warmup.frame_drawn()      # the second frame began after the first one's swap
         self.frame_no += 1
 
     def preview_scene(self) -> float:

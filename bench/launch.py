@@ -7,7 +7,11 @@ status file it writes every other frame, and prints, from the process start:
   kernel is compiled; an older sandbox drew nothing until its kernels were ready, so for it this
   is the same moment as ``ready``);
 - ``ready``: the open scene's kernels are loaded;
-- ``playing``: the world has taken its first step.
+- ``playing``: the world has taken its first step;
+
+each with the CPU seconds the sandbox process and its compiler process (a child, on the other
+core) had used by then: on this shared machine the wall times stretch with the load, the CPU
+seconds much less (the larger of the two is about what an idle machine waits).
 
 ``cold`` runs with an empty cache directory (``STELKROPP_CACHE_DIR``, fresh each repeat);
 ``cached`` right after it with the same directory.  The machine's load average (``uptime``) is
@@ -52,6 +56,27 @@ def _start_xvfb():
     raise RuntimeError("no free X display number")
 
 
+def cpu_seconds(pid: int) -> tuple[float, float]:
+    """(CPU seconds of process ``pid``, of its live children) from /proc (Linux; 0 elsewhere).
+    On a loaded machine wall times stretch with the load; the CPU seconds of the sandbox (and
+    of its compiler process, on the other core) are what an idle machine would wait."""
+    tick = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+
+    def one(p):
+        try:
+            f = Path(f"/proc/{p}/stat").read_text().rsplit(")", 1)[1].split()
+            return (int(f[11]) + int(f[12])) / tick
+        except (OSError, IndexError, ValueError):
+            return 0.0
+    kids = []
+    try:
+        for t in Path(f"/proc/{pid}/task").iterdir():
+            kids += [int(k) for k in (t / "children").read_text().split()]
+    except OSError:
+        pass
+    return one(pid), sum(one(k) for k in kids)
+
+
 def _status(path: Path) -> dict:
     try:
         return json.loads(path.read_text())
@@ -69,6 +94,7 @@ def launch_once(app_root: Path, scene: str, cache: Path, display: str, timeout: 
         cmd = [sys.executable, "-m", "app", scene, "--position", "0,0", "--size", "1280x800",
                "--status", str(st_path), "--no-autosave-offer"]
         out = {"load_before": load()}
+        seen = set()
         t0 = time.monotonic()
         proc = subprocess.Popen(cmd, cwd=app_root, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                                 text=True)
@@ -79,15 +105,16 @@ def launch_once(app_root: Path, scene: str, cache: Path, display: str, timeout: 
                     break
                 st = _status(st_path)
                 t = time.monotonic() - t0
-                if st.get("frame", 0) >= 1:
-                    out.setdefault("drawn", t)
-                    out.setdefault("progress_seen", [])
-                    if "progress" in st and len(out["progress_seen"]) < 400:
-                        out["progress_seen"].append(round(st["progress"], 3))
-                if st.get("ready"):
-                    out.setdefault("ready", t)
+                if st.get("frame", 0) >= 1 and "drawn" not in out:
+                    out["drawn"], out["cpu_drawn"] = t, cpu_seconds(proc.pid)
+                    # an older sandbox has no progress field and draws no scene before it is ready
+                    out["scene_before_ready"] = "progress" in st
+                    if "progress" in st:
+                        seen.add(round(st["progress"], 3))
+                if st.get("ready") and "ready" not in out:
+                    out["ready"], out["cpu_ready"] = t, cpu_seconds(proc.pid)
                 if st.get("ready") and st.get("steps", 0) > 0:
-                    out["playing"] = t
+                    out["playing"], out["cpu_playing"] = t, cpu_seconds(proc.pid)
                     break
                 time.sleep(0.05)
             else:
@@ -98,8 +125,7 @@ def launch_once(app_root: Path, scene: str, cache: Path, display: str, timeout: 
                 proc.wait(10)
             except subprocess.TimeoutExpired:
                 proc.kill()
-        seen = out.pop("progress_seen", [])
-        out["progress_values"] = len(set(seen))
+        out["progress_values"] = len(seen)
         out["load_after"] = load()
         return out
 
@@ -107,8 +133,11 @@ def launch_once(app_root: Path, scene: str, cache: Path, display: str, timeout: 
 def _fmt(r: dict) -> str:
     if "error" in r:
         return f"ERROR {r['error']}"
-    parts = [f"{k} {r[k]:6.1f} s" for k in ("drawn", "ready", "playing") if k in r]
-    return "  ".join(parts) + f"  ({r['progress_values']} progress values)  [{r['load_before']} -> {r['load_after']}]"
+    parts = [f"{k} {r[k]:6.1f} s (cpu {r['cpu_' + k][0]:.1f} + {r['cpu_' + k][1]:.1f})"
+             for k in ("drawn", "ready", "playing") if k in r]
+    note = "" if r.get("scene_before_ready", True) else "  (drawn: an empty first frame, the scene only when ready)"
+    return "  ".join(parts) + f"  ({r['progress_values']} progress values){note}  " \
+        f"[{r['load_before']} -> {r['load_after']}]"
 
 
 def main(argv=None) -> int:
