@@ -42,7 +42,10 @@ def listen(on_start, on_end) -> None:
 
 
 def _say(*words) -> None:
-    print(*words, flush=True)
+    try:
+        print(*words, flush=True)
+    except (BrokenPipeError, ValueError):   # the sandbox is gone: so is the point of compiling
+        os._exit(0)
 
 
 def _die_with_parent() -> None:

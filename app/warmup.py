@@ -31,6 +31,7 @@ from .compile_worker import listen
 # kernels a cold launch compiles per unit, both processes together (only the progress bar uses
 # it, until a cold launch has saved its own count): the default scene compiled 133 in all
 DEFAULT_COUNTS = {"solve": 45, "frame": 25, "broad": 15, "narrow": 42, "step": 6}
+MIN_COUNTED = 20          # fewer compiled kernels than this: a warm numba cache, not a count
 FIRST_FRAME_WAIT = 10.0   # s: compile here after the first frame, or after this without a window
 
 
@@ -105,9 +106,10 @@ class Warmup:
         if not todo:
             return 0
         try:
-            return int(json.loads(self._counts_path().read_text())["total"])
+            total = int(json.loads(self._counts_path().read_text())["total"])
         except (OSError, ValueError, KeyError, TypeError, AttributeError):
-            return sum(DEFAULT_COUNTS.get(u.split(":")[0], 0) for u in todo)
+            total = 0
+        return total if total > 0 else sum(DEFAULT_COUNTS.get(u.split(":")[0], 0) for u in todo)
 
     # -- running -----------------------------------------------------------------------
     def start(self):
@@ -179,10 +181,11 @@ class Warmup:
     def _save_counts(self, compiled_here: int) -> None:
         """Remember how many kernels this cold launch compiled (the next version's progress bar)."""
         path = self._counts_path()
-        if path is None or self.expected == 0 or not (self.theirs or compiled_here):
+        total = compiled_here + self._helper_kernels()
+        if path is None or total < MIN_COUNTED:     # loaded from numba's cache: nothing to learn
             return
         try:
-            path.write_text(json.dumps({"total": compiled_here + self._helper_kernels()}))
+            path.write_text(json.dumps({"total": total}))
         except OSError:
             pass
 
