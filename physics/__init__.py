@@ -31,6 +31,12 @@ def save_scene(world, path, name=None, description=None) -> None:
 
 
 def solvers_available() -> list[str]:
+    """Names of the solver modes this build has (the values ``World.solver`` accepts).
+
+    >>> import physics
+    >>> "soft_step" in physics.solvers_available()
+    True
+    """
     from .solvers import available
     return available()
 

@@ -11,7 +11,9 @@ class SimulationError(RuntimeError):
     def __init__(self, message: str, bodies=(), stage: str = ""):
         super().__init__(message)
         self.bodies = list(bodies)
+        """Names (or ids) of the bodies whose state went non-finite or gained energy."""
         self.stage = stage
+        """The pipeline stage that produced the bad state (e.g. "solve", "integrate")."""
 
 
 class SceneError(ValueError):
@@ -20,4 +22,6 @@ class SceneError(ValueError):
     def __init__(self, message: str, problems=(), path=None):
         super().__init__(message)
         self.problems = list(problems)
+        """Every problem found, as (json_path, reason) pairs, e.g. ("bodies[3].density", "must be > 0")."""
         self.path = path
+        """The scene file the problems are in (None for scene data given in memory)."""

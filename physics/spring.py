@@ -40,10 +40,12 @@ class Spring:
 
     @property
     def id(self) -> int:
+        """Stable integer id of this spring (never reused in its world)."""
         return self._id
 
     @property
     def alive(self) -> bool:
+        """False once the spring (or a body it joins) was removed from the world."""
         return self._id in self._world._springs.slot_of
 
     @property
@@ -75,6 +77,7 @@ class Spring:
 
     @property
     def stiffness(self) -> float:
+        """Spring constant k in N/m (>= 0). ValueError for negative or non-finite values."""
         return float(self._S.k[self._s])
 
     @stiffness.setter
@@ -84,6 +87,7 @@ class Spring:
 
     @property
     def damping(self) -> float:
+        """Damping coefficient c in N s/m along the spring's axis (>= 0). ValueError for negative or non-finite values."""
         return float(self._S.c[self._s])
 
     @damping.setter
@@ -93,6 +97,7 @@ class Spring:
 
     @property
     def rest_length(self) -> float:
+        """Length (m, >= 0) at which the spring exerts no force. ValueError for negative or non-finite values."""
         return float(self._S.rest[self._s])
 
     @rest_length.setter
@@ -102,6 +107,7 @@ class Spring:
 
     @property
     def name(self):
+        """Optional unique name (str or None); world.spring(name) finds it. ValueError when another spring has it."""
         return self._world._name_of_spring(self._id)
 
     @name.setter
@@ -116,6 +122,7 @@ class Spring:
 
     @property
     def length(self) -> float:
+        """Current distance (m) between the two attachment points."""
         pa, pb = self.endpoints()
         return float(np.hypot(pa[0] - pb[0], pa[1] - pb[1]))
 

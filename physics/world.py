@@ -23,7 +23,7 @@ from .world_springs import SpringsMixin
 __all__ = ["World", "Contact", "RenderData", "STATE_DTYPE"]
 
 
-def _tolerance(field: str):
+def _tolerance(field: str, doc: str = ""):
     """A validated non-negative world setting that the step context reads (refreshed on change)."""
     private = "_" + field
 
@@ -33,7 +33,7 @@ def _tolerance(field: str):
     def put(self, value) -> None:
         setattr(self, private, finite_num(value, field, lo=0.0))
         self._pipeline.dirty = True
-    return property(get, put)
+    return property(get, put, doc=doc)
 
 
 class World(BodiesMixin, SpringsMixin):
@@ -44,6 +44,17 @@ class World(BodiesMixin, SpringsMixin):
     :meth:`step`.
     Contacts combine friction by the geometric mean and restitution by the
     maximum of the two bodies' coefficients.
+
+    >>> import physics
+    >>> w = physics.World(gravity=(0, -10))
+    >>> ground = w.add_body(physics.Polygon.box(10, 1), kind="static", position=(0, -0.5))
+    >>> ball = w.add_body(physics.Circle(0.5), position=(0, 5), name="ball")
+    >>> for _ in range(180):   # 3 s at the default 60 steps per second
+    ...     w.step()
+    >>> round(ball.position[1], 1)   # it fell 4.5 m and rests on the ground
+    0.5
+    >>> w.body("ball") is ball, round(w.time, 6)
+    (True, 3.0)
     """
 
     def __init__(self, gravity=(0.0, -9.81), dt: float = 1 / 60, solver: str = options.DEFAULT_SOLVER,
@@ -60,9 +71,13 @@ class World(BodiesMixin, SpringsMixin):
         #: what the scene file this world came from says of itself (name, description, camera);
         #: saving writes it back.  Edit it to change what is saved.
         self.metadata: dict = {}
+        """What the scene file says of itself (name, description, camera, ...); saving writes it back."""
         self.time = 0.0
+        """Simulated time in seconds since the world was created (or loaded): dt summed over the steps taken."""
         self.steps = 0
+        """Number of step() calls completed."""
         self.fault: SimulationError | None = None
+        """The last SimulationError a step raised (the world was reverted to the state before it), or None."""
         # collision tolerances (metres): contacts within `linear_slop` count as resting, and
         # the speculative margin catches pairs that will touch during the step
         self.linear_slop = 0.005
@@ -101,14 +116,20 @@ class World(BodiesMixin, SpringsMixin):
         return self._store.contacts
 
     # -- settings -------------------------------------------------------
-    linear_slop = _tolerance("linear_slop")
-    speculative_distance = _tolerance("speculative_distance")
-    sleep_linear = _tolerance("sleep_linear")
-    sleep_angular = _tolerance("sleep_angular")
-    time_to_sleep = _tolerance("time_to_sleep")
+    linear_slop = _tolerance("linear_slop", "Contact distance (m, >= 0; default 0.005) within which touching bodies count as resting: penetration up to it is not pushed out. ValueError for negative or non-finite values.")
+    """Contact distance (m, >= 0; default 0.005) within which touching bodies count as resting: penetration up to it is not pushed out. ValueError for negative or non-finite values."""
+    speculative_distance = _tolerance("speculative_distance", "Margin (m, >= 0; default 4 x linear_slop) within which separated shapes already get contact rows, so a pair that closes during the step is caught. ValueError for negative or non-finite values.")
+    """Margin (m, >= 0; default 4 x linear_slop) within which separated shapes already get contact rows, so a pair that closes during the step is caught. ValueError for negative or non-finite values."""
+    sleep_linear = _tolerance("sleep_linear", "Speed (m/s, >= 0; default 0.05) below which a body's centre and rim count as at rest for sleeping. ValueError for negative or non-finite values.")
+    """Speed (m/s, >= 0; default 0.05) below which a body's centre and rim count as at rest for sleeping. ValueError for negative or non-finite values."""
+    sleep_angular = _tolerance("sleep_angular", "Angular speed (rad/s, >= 0; default 0.5) below which a small body counts as at rest for sleeping. ValueError for negative or non-finite values.")
+    """Angular speed (rad/s, >= 0; default 0.5) below which a small body counts as at rest for sleeping. ValueError for negative or non-finite values."""
+    time_to_sleep = _tolerance("time_to_sleep", "Seconds (>= 0; default 0.5) an island must stay at rest before it falls asleep. ValueError for negative or non-finite values.")
+    """Seconds (>= 0; default 0.5) an island must stay at rest before it falls asleep. ValueError for negative or non-finite values."""
 
     @property
     def gravity(self) -> tuple[float, float]:
+        """Gravitational acceleration (m/s^2) as (x, y); default (0, -9.81). Setting it wakes every body. ValueError for a non-finite or malformed pair."""
         return (float(self._gravity[0]), float(self._gravity[1]))
 
     @gravity.setter
@@ -119,6 +140,7 @@ class World(BodiesMixin, SpringsMixin):
 
     @property
     def dt(self) -> float:
+        """Length of one step(), in seconds (> 0). ValueError for zero, negative or non-finite values. A sudden change keeps the warm start when it is small (impulses rescaled) and drops it when the step grows more than 4x."""
         return self._dt
 
     @dt.setter
@@ -127,6 +149,7 @@ class World(BodiesMixin, SpringsMixin):
 
     @property
     def solver(self) -> str:
+        """Name of the solver mode (one of physics.solvers_available(); default "soft_step"). Switching keeps the bodies, contacts' impulses (rescaled to the new mode) and each mode's own settings, and wakes the world. ValueError for an unknown name."""
         return self._solver_name
 
     @solver.setter
@@ -162,6 +185,7 @@ class World(BodiesMixin, SpringsMixin):
 
     @property
     def integrator(self) -> str:
+        """The seed modes' time integrator ("symplectic_euler", "verlet", "rk4", ...: physics.options.INTEGRATORS). ValueError for an unknown name."""
         return self._integrator
 
     @integrator.setter
@@ -172,6 +196,7 @@ class World(BodiesMixin, SpringsMixin):
 
     @property
     def broadphase(self) -> str:
+        """Broad-phase algorithm ("sweep", "quadtree", "brute": physics.options.BROADPHASES). Same pairs whichever is chosen; ValueError for an unknown name."""
         return self._broadphase
 
     @broadphase.setter
@@ -181,6 +206,7 @@ class World(BodiesMixin, SpringsMixin):
 
     @property
     def narrowphase(self) -> str:
+        """Narrow-phase algorithm for polygon pairs ("sat" or "gjk": physics.options.NARROWPHASES). ValueError for an unknown name."""
         return self._narrowphase
 
     @narrowphase.setter
@@ -191,6 +217,7 @@ class World(BodiesMixin, SpringsMixin):
 
     @property
     def sleeping(self) -> bool:
+        """Whether resting islands fall asleep (default True). Turning it off wakes every body."""
         return self._sleeping
 
     @sleeping.setter

@@ -135,6 +135,7 @@ class BodiesMixin:
 
     @property
     def bodies(self) -> list[Body]:
+        """Every body of the world, in slot order (a new list each call; removing a body changes the order of the rest)."""
         ids = self._bodies.view.id[: self._bodies.n]
         return [self._handles[int(i)] for i in ids]
 

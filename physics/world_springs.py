@@ -69,6 +69,7 @@ class SpringsMixin:
 
     @property
     def springs(self) -> list[Spring]:
+        """Every spring of the world, in slot order (a new list each call)."""
         ids = self._springs.view.id[: self._springs.n]
         return [self._spring_handles[int(i)] for i in ids]
 

@@ -2,7 +2,8 @@
 
 Reads the package the way the reference pages do (griffe, static: nothing is imported or
 compiled): every name in ``physics.__all__`` and, for classes, each public member defined on
-the class (methods, properties, and attributes set in ``__init__``).
+the class or inherited from the package's own base classes (methods, properties, and
+attributes set in ``__init__``).
 
     python -m tools.docs coverage [--missing]
 """
@@ -47,9 +48,13 @@ def measure(package: str = "physics", search_path: Path = ROOT) -> Coverage:
         target = obj.final_target if obj.is_alias else obj
         _record(cov, f"{package}.{name}", target)
         if target.is_class:
-            for mname, member in target.members.items():
-                if _public(mname) and not member.is_alias and mname != "__init__":
-                    _record(cov, f"{package}.{name}.{mname}", member)
+            # members defined on the class and those it inherits from the package's own bases
+            # (World is composed of mixins: add_body lives in world_bodies.py)
+            inherited = {k: m for k, m in target.inherited_members.items()
+                         if str(m.final_target.path).startswith(package + ".")}
+            for mname, member in {**inherited, **target.members}.items():
+                if _public(mname) and mname != "__init__" and (mname in inherited or not member.is_alias):
+                    _record(cov, f"{package}.{name}.{mname}", member.final_target if member.is_alias else member)
     return cov
 
 
