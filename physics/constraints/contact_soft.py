@@ -26,15 +26,20 @@ after the bodies moved by (dp, R(dq)) since the step began is
   s = s0 + (dp_b - dp_a) . n + (c_b - 1)(r_b . n) + s_b (r_b x n) - (same for a).
 
 Arguments: ``c`` the step context record (physics/step/context.py: ``nc``),
-``p`` the mode's parameter record, which must have ``stick_speed``, ``inv_h``,
-``soft_dyn`` and ``soft_static`` (softness triples), ``push_out_speed``,
+``p`` the mode's parameter record, which must have ``stick_speed``, ``h``, ``inv_h``,
+``hertz_dyn``, ``hertz_static`` (contact frequencies, raised per contact by
+constraints/contact_stiffness.py) and ``damping_ratio``, ``push_out_speed``,
 ``block_solver`` and ``restitution_threshold``; ``SB`` the body rows
 (constraints/body_rows.py), ``C`` the contact table, ``R`` the rows' scratch.
 """
 from __future__ import annotations
 
+import math
+
 from .._jit import kernel
 from .block import block_mass, solve_block
+from .contact_stiffness import contact_hertz
+from .softness import softness
 from .body_rows import DCOS, DPX, DPY, DSIN, II, IM, VX, VY, W
 
 # per point p the fields start at p * PT
@@ -51,13 +56,15 @@ RIGID = K11 + 5   # 1.0 when one of the bodies does not move (static/kinematic):
 NX = K11 + 6      # the normal
 NY = K11 + 7
 KE0 = K11 + 8     # kinetic energy of the pair when the manifold first pushed this step (restitution's cap)
-NF = K11 + 9
+SOFT = K11 + 9    # this manifold's (bias rate, mass scale, impulse scale): constraints/contact_stiffness.py
+NF = K11 + 12
 
 
 @kernel
 def prepare_contacts(c, p, B, C, R):
     """Fill R[:nc] from the manifolds and the bodies' state at the start of the step."""
     stick_speed = p.stick_speed
+    g = math.hypot(c.gx, c.gy)
     for k in range(c.nc):
         a = C.a[k]
         b = C.b[k]
@@ -113,6 +120,15 @@ def prepare_contacts(c, p, B, C, R):
         R[k, NX] = nx
         R[k, NY] = ny
         R[k, RIGID] = 1.0 if (ima == 0.0 or imb == 0.0) else 0.0
+        load = 0.0
+        for q in range(cnt):
+            load += C.jn[k, q]
+        hz = contact_hertz(p.hertz_static if R[k, RIGID] != 0.0 else p.hertz_dyn, load, ima, imb,
+                           B.bound_r[a], B.bound_r[b], p.h, g)
+        rate, mscale, iscale = softness(hz, p.damping_ratio, p.h)
+        R[k, SOFT] = rate
+        R[k, SOFT + 1] = mscale
+        R[k, SOFT + 2] = iscale
         R[k, BLOCK] = 0.0
         if cnt == 2:
             ra0 = R[k, RNA]
@@ -212,10 +228,9 @@ def solve_contacts(c, p, SB, C, R, use_bias, track):
         bny = imb * ny
         if use_bias and C.e[k] != 0.0 and R[k, MAXJ] == 0.0 and R[k, PT + MAXJ] == 0.0:
             R[k, KE0] = _energy(vax, vay, wa, ima, iia) + _energy(vbx, vby, wb, imb, iib)
-        soft = p.soft_static if R[k, RIGID] != 0.0 else p.soft_dyn
-        rate = soft[0]
-        mscale = soft[1]
-        iscale = soft[2]
+        rate = R[k, SOFT]
+        mscale = R[k, SOFT + 1]
+        iscale = R[k, SOFT + 2]
         # displacement of b relative to a since the step began, along n
         ddn = (SB[b, DPX] - SB[a, DPX]) * nx + (SB[b, DPY] - SB[a, DPY]) * ny
         cam = SB[a, DCOS] - 1.0

@@ -29,7 +29,7 @@ class SoftStep(SolverMode):
     # sub-step length and its inverse; (bias rate, mass scale, impulse scale) of contacts between
     # two moving bodies and of contacts against a body that does not move
     derived = (("h", np.float64), ("inv_h", np.float64), ("soft_dyn", np.float64, (3,)),
-               ("soft_static", np.float64, (3,)))
+               ("soft_static", np.float64, (3,)), ("hertz_dyn", np.float64), ("hertz_static", np.float64))
 
     def __init__(self):
         self._alloc(64)
@@ -55,6 +55,9 @@ class SoftStep(SolverMode):
         par.set("inv_h", inv_h)
         par.set("soft_dyn", softness(min(hertz, cap), zeta, h))
         par.set("soft_static", softness(min(2.0 * hertz, cap), zeta, h))
+        # the contact rows start from these and stiffen under load (constraints/contact_stiffness.py)
+        par.set("hertz_dyn", min(hertz, cap))
+        par.set("hertz_static", min(2.0 * hertz, cap))
         par._derived_for = key
 
     def step(self, ctx, par, store):
