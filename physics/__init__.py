@@ -41,10 +41,11 @@ def solvers_available() -> list[str]:
     return available()
 
 
-def tune(source, steps=600, metric="trajectory", budget=0.01, scheduler=None, modes=None, progress=True):
+def tune(source, steps=600, metric="trajectory", budget=0.01, scheduler=None, modes=None, progress=True,
+         results=None, resume=False):
     """The fastest solver mode and settings whose error on ``source`` (a World, scene data or a scene
     file) stays within ``budget`` over ``steps`` steps; see physics.tuning.search.tune (returns a
     TuneResult: rows, front, choice, fragment; ValueError for a bad steps/metric/budget/scheduler)."""
     from .tuning import tune as _tune
     return _tune(source, steps=steps, metric=metric, budget=budget, scheduler=scheduler, modes=modes,
-                 progress=progress)
+                 progress=progress, results=results, resume=resume)

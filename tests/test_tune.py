@@ -134,3 +134,32 @@ def test_sweep_on_a_dask_local_cluster_matches_the_inline_run():
     assert len(shared) > len(grid.round_one(["soft_step"]))
     assert {k: a[k] for k in shared} == {k: b[k] for k in shared}
     assert local.choice["within"] and inline.choice["within"]  # which is fastest is a timing: may differ
+
+
+def test_results_stream_to_a_file_and_resume_runs_only_the_missing_cases(tmp_path, monkeypatch):
+    from physics.tuning import search
+    calls = []
+    real = search.task
+
+    def counting(cand, *args):
+        calls.append(cand.key)
+        return real(cand, *args)
+
+    monkeypatch.setattr(search, "task", counting)
+    kw = dict(steps=16, budget=0.05, modes=["soft_step"], scheduler="inline", progress=False)
+    results = tmp_path / "runs.jsonl"
+    first = physics.tune(small_scene(), results=results, **kw)
+    lines = results.read_text().splitlines()
+    assert len(lines) == 1 + len(calls) == 1 + 2 + len(first.rows)  # header, reference pair, every row
+    # an interrupted sweep: the file ends after 10 runs, the last line cut in half by the kill
+    results.write_text("\n".join(lines[:11]) + "\n" + lines[11][:40])
+    calls.clear()
+    again = physics.tune(small_scene(), results=results, resume=True, **kw)
+    assert len(calls) == len(lines) - 11  # only the missing ones ran (the cut one again)
+    assert not set(calls) & {json.loads(x)["key"] for x in lines[1:11]}
+    # the stored runs stand for new ones: the same errors, bit for bit
+    assert {r["key"]: r["error"] for r in again.rows} == {r["key"]: r["error"] for r in first.rows}
+    # a results file of another scene (or step count) is refused, not mixed in
+    with pytest.raises(ValueError, match="^results: .* another scene"):
+        physics.tune(double_pendulum(), results=results, resume=True, **kw)
+

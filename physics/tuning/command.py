@@ -20,6 +20,8 @@ def add_parser(sub, count) -> None:
     p.add_argument("--plot", metavar="PNG", help="save the speed/error plot here")
     p.add_argument("--all", action="store_true", help="list every candidate, not only the Pareto front")
     p.add_argument("--json", metavar="FILE", help="also write every candidate's numbers here as JSON")
+    p.add_argument("--results", metavar="FILE", help="stream each finished run to this JSON-lines file")
+    p.add_argument("--resume", action="store_true", help="with --results: skip the runs already in FILE")
     p.set_defaults(run=run)
 
 
@@ -35,9 +37,12 @@ def run(args) -> int:
     modes = args.modes.split(",") if args.modes else None
     try:
         result = tune(args.scene, steps=args.steps, metric=args.metric, budget=budget,
-                      scheduler=args.scheduler, modes=modes)
+                      scheduler=args.scheduler, modes=modes, results=args.results, resume=args.resume)
     except (ValueError, ImportError) as exc:
         print(f"tune: {exc}", file=sys.stderr)
+        return 1
+    except OSError as exc:
+        print(f"tune: results: cannot write {args.results} ({exc.strerror or exc})", file=sys.stderr)
         return 1
     print(report.table(result, all_rows=args.all))
     print(report.summary(result))

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from . import candidates as grid
 from .metrics import check_budget, check_metric, compare, statistical
 from .runs import Candidate, task
+from .journal import Journal
 from .sweep import Sweep
 
 # samples per run (the stride is rounded so every DT_FACTORS step count is whole)
@@ -93,34 +94,46 @@ def stride_for(steps: int) -> int:
 
 
 def tune(source, steps: int = 600, metric: str = "trajectory", budget: float = 0.01, scheduler=None,
-         modes=None, progress: bool = True) -> TuneResult:
+         modes=None, progress: bool = True, results=None, resume: bool = False) -> TuneResult:
     """The fastest mode and settings for ``source`` (World, scene data or scene file) whose
     ``metric`` error over ``steps`` scene steps is <= ``budget`` (metres; energy_drift: a fraction).
 
     ``scheduler``: None (a local Dask cluster), a Dask address, or "inline"; ``modes``: the solver
     modes to search (default all; the scene as it is always runs, as the speed baseline, and is
-    chosen only if its mode is among them).  ValueError names a bad steps, metric, budget, modes or
-    scheduler; SceneError for a bad scene."""
+    chosen only if its mode is among them).  ``results``: a file that receives each finished run as
+    it arrives (journal.py); with ``resume`` the runs already in it are not run again.
+    ValueError names a bad steps, metric, budget, modes, scheduler or results file; SceneError
+    for a bad scene."""
     metric, budget, steps = check_metric(metric), check_budget(budget), check_steps(steps)
     modes = _check_modes(modes)
     data, _ = scene_data(source)
     stride = stride_for(steps)
     steps = max(stride, steps // stride * stride)
-    with Sweep(scheduler, progress=progress) as sweep:
-        ref, fine = sweep.map(task, [grid.REFERENCE, grid.FINE], data, steps, stride, desc="reference")
-        gap = compare(fine, ref, metric if metric != "penetration" else "trajectory")["error"]
-        converged = ref.error is None and fine.error is None and gap <= 0.5 * budget
-        score = (lambda r: compare(r, ref, metric)) if converged else (lambda r: statistical(r, ref, metric))
-        base = Candidate(data.get("world", {}).get("solver", "soft_step"))
-        first = [base] + [c for c in grid.round_one(modes) if c.key != base.key]
-        rows = [_row(c, r, score(r), budget) for c, r in
-                zip(first, sweep.map(task, first, data, steps, stride, desc="round 1"))]
-        mine = [r for r in rows if r["candidate"].solver in modes]
-        second = [c for c in grid.round_two([r["candidate"] for r in grid.pareto(mine)])
-                  if c.key not in {r["key"] for r in rows}]
-        rows += [_row(c, r, score(r), budget) for c, r in
-                 zip(second, sweep.map(task, second, data, steps, stride, desc="round 2"))]
-        where = sweep.where
+    journal = Journal(results, data, steps, stride, resume) if results is not None else None
+    try:
+        with Sweep(scheduler, progress=progress) as sweep:
+            return _search(sweep, journal, data, steps, stride, metric, budget, modes)
+    finally:
+        if journal is not None:
+            journal.close()
+
+
+def _search(sweep, journal, data, steps, stride, metric, budget, modes) -> TuneResult:
+    ref, fine = sweep.map(task, [grid.REFERENCE, grid.FINE], data, steps, stride, desc="reference",
+                          journal=journal)
+    gap = compare(fine, ref, metric if metric != "penetration" else "trajectory")["error"]
+    converged = ref.error is None and fine.error is None and gap <= 0.5 * budget
+    score = (lambda r: compare(r, ref, metric)) if converged else (lambda r: statistical(r, ref, metric))
+    base = Candidate(data.get("world", {}).get("solver", "soft_step"))
+    first = [base] + [c for c in grid.round_one(modes) if c.key != base.key]
+    rows = [_row(c, r, score(r), budget) for c, r in
+            zip(first, sweep.map(task, first, data, steps, stride, desc="round 1", journal=journal))]
+    mine = [r for r in rows if r["candidate"].solver in modes]
+    second = [c for c in grid.round_two([r["candidate"] for r in grid.pareto(mine)])
+              if c.key not in {r["key"] for r in rows}]
+    rows += [_row(c, r, score(r), budget) for c, r in
+             zip(second, sweep.map(task, second, data, steps, stride, desc="round 2", journal=journal))]
+    where = sweep.where
     front = grid.pareto(rows)
     for r in rows:
         r["front"] = r in front

@@ -65,26 +65,33 @@ class Sweep:
             return f"Dask LocalCluster, {self.workers} workers x 1 thread"
         return f"Dask scheduler {self.scheduler}"
 
-    def map(self, fn, cases: list, *args, desc: str = "cases") -> list:
-        """``[fn(case, *args) for case in cases]``, run as Dask tasks; results in the cases' order."""
+    def map(self, fn, cases: list, *args, desc: str = "cases", journal=None) -> list:
+        """``[fn(case, *args) for case in cases]``, run as Dask tasks; results in the cases' order.
+
+        With a ``journal`` (journal.Journal), cases whose ``key`` it holds are not run again and
+        each new result is appended to it as it finishes."""
         from tqdm import tqdm
-        bar = tqdm(total=len(cases), desc=desc, unit="case", file=sys.stderr,
+        done = journal.done if journal is not None else {}
+        out = [done.get(c.key) for c in cases]
+        todo = [i for i, r in enumerate(out) if r is None]
+        bar = tqdm(total=len(cases), initial=len(cases) - len(todo), desc=desc, unit="case", file=sys.stderr,
                    disable=not (self.progress and sys.stderr.isatty()))
+
+        def finished(i, result):
+            out[i] = result
+            if journal is not None:
+                journal.add(result)
+            bar.update()
         try:
             if self._client is None:
-                out = []
-                for c in cases:
-                    out.append(fn(c, *args))
-                    bar.update()
+                for i in todo:
+                    finished(i, fn(cases[i], *args))
                 return out
             from dask.distributed import as_completed
             # pure=False: a case is timed, so an identical case must run again, not come from a cache
-            futures = [self._client.submit(fn, c, *args, pure=False) for c in cases]
-            index = {f.key: i for i, f in enumerate(futures)}
-            out = [None] * len(cases)
-            for fut in as_completed(futures):
-                out[index[fut.key]] = fut.result()
-                bar.update()
+            futures = {self._client.submit(fn, cases[i], *args, pure=False): i for i in todo}
+            for fut in as_completed(list(futures)):
+                finished(futures[fut], fut.result())
             return out
         finally:
             bar.close()
