@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from .store import KIND_NAMES, KINDS
-from .validate import checked_density, finite_num, finite_vec, friction_pair
+from .validate import checked_density, finite_num, finite_vec, friction_pair, shown
 
 
 class Body:
@@ -145,8 +145,8 @@ class Body:
 
     @kind.setter
     def kind(self, value):
-        if value not in KINDS:
-            raise ValueError(f"kind: must be one of {list(KINDS)}, got {value!r}")
+        if not isinstance(value, str) or value not in KINDS:
+            raise ValueError(f"kind: must be one of {list(KINDS)}, got {shown(value)}")
         s = self._s
         self._B.kind[s] = KINDS[value]
         self._world._set_mass(s, self.shape, float(self._B.density[s]))

@@ -1,6 +1,8 @@
 """Unique names of a world's items (bodies, springs, ...): name <-> stable id, validated."""
 from __future__ import annotations
 
+from .validate import shown
+
 
 class Names:
     """A two-way map between the names and the stable ids of one kind of item."""
@@ -13,9 +15,9 @@ class Names:
     def check_new(self, name) -> None:
         """ValueError naming ``name`` unless it is a non-empty string no item has yet."""
         if not isinstance(name, str) or not name:
-            raise ValueError(f"name: a {self.what} name must be a non-empty string, got {name!r}")
+            raise ValueError(f"name: a {self.what} name must be a non-empty string, got {shown(name)}")
         if name in self.ids:
-            raise ValueError(f"name: a {self.what} named {name!r} already exists")
+            raise ValueError(f"name: a {self.what} named {shown(name)} already exists")
 
     def add(self, oid: int, name) -> None:
         if name is not None:
@@ -41,7 +43,7 @@ class Names:
         try:
             return self.ids[name]
         except (KeyError, TypeError):
-            raise KeyError(f"no {self.what} named {name!r}") from None
+            raise KeyError(f"no {self.what} named {shown(name)}") from None
 
     def name_of(self, oid: int):
         return self.names.get(oid)

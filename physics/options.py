@@ -7,6 +7,8 @@ these tuples; kernels receive the codes.
 """
 from __future__ import annotations
 
+from .validate import shown
+
 #: solver modes, default first (physics/solvers/)
 SOLVERS = ("soft_step", "sequential_impulse", "impulse", "penalty", "hybrid")
 DEFAULT_SOLVER = "soft_step"
@@ -42,4 +44,4 @@ def code(names: tuple, name: str, what: str) -> int:
     """The code (index) of ``name`` in ``names``, or ValueError naming ``what`` and the choices."""
     if isinstance(name, str) and name in names:
         return names.index(name)
-    raise ValueError(f"unknown {what} {name!r}; choose one of {list(names)}")
+    raise ValueError(f"unknown {what} {shown(name)}; choose one of {list(names)}")

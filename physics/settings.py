@@ -8,6 +8,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
+from .validate import as_float, is_number, shown
+
 
 @dataclass(frozen=True)
 class Setting:
@@ -23,33 +27,43 @@ class Setting:
         return type(self.default)
 
     def coerce(self, value):
-        """Validated value of the declared type, or ValueError saying why."""
+        """Validated value of the declared type, or ValueError saying why: a bool setting takes
+        True/False (numpy's too), a choice one of ``choices``, a number any real number (numpy's
+        too; not a string, bytes or bool) within [lo, hi], an integer setting a whole one."""
         t = self.type
+        who = f"setting '{self.name}'"
         if t is bool:
-            if isinstance(value, bool):
-                return value
-            raise ValueError(f"setting '{self.name}' must be true or false, got {value!r}")
+            if isinstance(value, (bool, np.bool_)):
+                return bool(value)
+            raise ValueError(f"{who} must be true or false, got {shown(value)}")
         if t is str:
-            if value in self.choices:
+            if isinstance(value, str) and value in self.choices:
                 return value
-            raise ValueError(f"setting '{self.name}' must be one of {list(self.choices)}, got {value!r}")
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise ValueError(f"setting '{self.name}' must be a number, got {value!r}")
-        if not math.isfinite(value):
-            raise ValueError(f"setting '{self.name}' must be finite, got {value!r}")
+            raise ValueError(f"{who} must be one of {list(self.choices)}, got {shown(value)}")
+        if not is_number(value):
+            raise ValueError(f"{who} must be a number, got {shown(value)}")
+        x = as_float(value, who)
+        if not math.isfinite(x):
+            raise ValueError(f"{who} must be finite, got {shown(value)}")
         if t is int:
-            if float(value) != int(value):
-                raise ValueError(f"setting '{self.name}' must be an integer, got {value!r}")
-            value = int(value)
+            if x != math.floor(x):
+                raise ValueError(f"{who} must be an integer, got {shown(value)}")
+            value = int(x)
         else:
-            value = float(value)
-        if not math.isfinite(value):
-            raise ValueError(f"setting '{self.name}' must be finite, got {value!r}")
+            value = x
         if self.lo is not None and value < self.lo:
-            raise ValueError(f"setting '{self.name}' must be >= {self.lo}, got {value!r}")
+            raise ValueError(f"{who} must be >= {self.lo}, got {shown(value)}")
         if self.hi is not None and value > self.hi:
-            raise ValueError(f"setting '{self.name}' must be <= {self.hi}, got {value!r}")
+            raise ValueError(f"{who} must be <= {self.hi}, got {shown(value)}")
         return value
+
+
+class UnknownSetting(KeyError, ValueError):
+    """A setting name the solver mode does not declare: a KeyError (dict-like use) and a
+    ValueError (the API's error for bad input), whose message names the setting."""
+
+    def __str__(self):
+        return str(self.args[0]) if self.args else ""
 
 
 def declare(*settings: Setting) -> dict[str, Setting]:
@@ -82,8 +96,8 @@ class ModeSettings:
         self._values = store.values
 
     def _check(self, key):
-        if key not in self._decl:
-            raise KeyError(f"solver '{self._solver}' has no setting {key!r}; it has {list(self._decl)}")
+        if not isinstance(key, str) or key not in self._decl:
+            raise UnknownSetting(f"solver '{self._solver}' has no setting {shown(key)}; it has {list(self._decl)}")
 
     def __getitem__(self, key):
         self._check(key)
@@ -100,7 +114,7 @@ class ModeSettings:
         return len(self._decl)
 
     def __contains__(self, key):
-        return key in self._decl
+        return isinstance(key, str) and key in self._decl
 
     def items(self):
         return [(k, self._values[k]) for k in self._decl]
@@ -112,8 +126,19 @@ class ModeSettings:
         return dict(self._decl)
 
     def update(self, other=(), **kw):
-        for k, v in dict(other, **kw).items():
-            self[k] = v
+        """Assign several settings, all or none: every value is checked before any is applied
+        (UnknownSetting or ValueError for the first bad one)."""
+        try:
+            new = dict(other, **kw)
+        except (TypeError, ValueError):
+            raise ValueError(f"settings.update: expected a mapping of setting names to values, "
+                             f"got {shown(other)}") from None
+        checked = {}
+        for k, v in new.items():
+            self._check(k)
+            checked[k] = self._decl[k].coerce(v)
+        for k, v in checked.items():
+            self._store.assign(k, v)
 
     def to_dict(self) -> dict:
         return dict(self.items())

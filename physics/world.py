@@ -15,12 +15,16 @@ from .settings import ModeSettings, ModeValues
 from .spring import Spring
 from .step.pipeline import Pipeline
 from .store import Store
-from .validate import finite_num, finite_vec
+from .collision.broadphase.limit import MAX_PAIRS
+from .validate import finite_num, finite_vec, flag, whole
 from .views import STATE_DTYPE, Contact, RenderData
 from .world_bodies import BodiesMixin
 from .world_springs import SpringsMixin
 
-__all__ = ["World", "Contact", "RenderData", "STATE_DTYPE"]
+__all__ = ["World", "Contact", "RenderData", "STATE_DTYPE", "DT_MIN"]
+
+#: the shortest step (s): below it 1/dt and the sub-step rates leave the float range
+DT_MIN = 1e-9
 
 
 def _tolerance(field: str, doc: str = ""):
@@ -72,8 +76,7 @@ class World(BodiesMixin, SpringsMixin):
         #: saving writes it back.  Edit it to change what is saved.
         self.metadata: dict = {}
         """What the scene file says of itself (name, description, camera, ...); saving writes it back."""
-        self.time = 0.0
-        """Simulated time in seconds since the world was created (or loaded): dt summed over the steps taken."""
+        self._time = 0.0
         self.steps = 0
         """Number of step() calls completed."""
         self.fault: SimulationError | None = None
@@ -88,6 +91,7 @@ class World(BodiesMixin, SpringsMixin):
         self.sleep_linear = 0.05
         self.sleep_angular = 0.5
         self.time_to_sleep = 0.5
+        self.max_pairs = MAX_PAIRS
         self.gravity = gravity
         self.dt = dt
         self.integrator = integrator
@@ -95,8 +99,8 @@ class World(BodiesMixin, SpringsMixin):
         self.narrowphase = narrowphase
         self.solver = solver
         self.sleeping = sleeping
-        for k, v in (settings or {}).items():
-            self.settings[k] = v
+        if settings:
+            self.settings.update(settings)
 
     # -- the store (for the sandbox, the benchmark and tests that look inside) ------------
     @property
@@ -128,6 +132,27 @@ class World(BodiesMixin, SpringsMixin):
     """Seconds (>= 0; default 0.5) an island must stay at rest before it falls asleep. ValueError for negative or non-finite values."""
 
     @property
+    def max_pairs(self) -> int:
+        """The most candidate body pairs one step may examine (default 1,000,000: about 1 GB of
+        contact rows); a step that would need more raises SimulationError at the 'broadphase'
+        stage instead of exhausting memory.  A whole number >= 1 (ValueError otherwise)."""
+        return self._max_pairs
+
+    @max_pairs.setter
+    def max_pairs(self, value):
+        self._max_pairs = whole(value, "max_pairs", lo=1)
+
+    @property
+    def time(self) -> float:
+        """Simulated time in seconds since the world was created (or loaded): dt summed over the steps
+        taken. Settable: finite and >= 0 (ValueError naming 'time' otherwise)."""
+        return self._time
+
+    @time.setter
+    def time(self, value):
+        self._time = finite_num(value, "time", lo=0.0)
+
+    @property
     def gravity(self) -> tuple[float, float]:
         """Gravitational acceleration (m/s^2) as (x, y); default (0, -9.81). Setting it wakes every body. ValueError for a non-finite or malformed pair."""
         return (float(self._gravity[0]), float(self._gravity[1]))
@@ -140,12 +165,14 @@ class World(BodiesMixin, SpringsMixin):
 
     @property
     def dt(self) -> float:
-        """Length of one step(), in seconds (> 0). ValueError for zero, negative or non-finite values. A sudden change keeps the warm start when it is small (impulses rescaled) and drops it when the step grows more than 4x."""
+        """Length of one step(), in seconds: finite and >= DT_MIN (1e-9 s; ValueError otherwise: below it
+        1/dt and the sub-step rates leave the float range). A sudden change keeps the warm start when it
+        is small (impulses rescaled) and drops it when the step grows more than 4x."""
         return self._dt
 
     @dt.setter
     def dt(self, value):
-        self._dt = finite_num(value, "dt", lo=0.0, lo_open=True)
+        self._dt = finite_num(value, "dt", lo=DT_MIN)
 
     @property
     def solver(self) -> str:
@@ -222,7 +249,8 @@ class World(BodiesMixin, SpringsMixin):
 
     @sleeping.setter
     def sleeping(self, on):
-        self._sleeping = bool(on)
+        on = flag(on, "sleeping")
+        self._sleeping = on
         if not on:
             self.wake_all()
 
@@ -239,7 +267,7 @@ class World(BodiesMixin, SpringsMixin):
         Raises :class:`SimulationError` (and leaves the world as it was before the
         step) if the step would produce a non-finite value.
         """
-        h = self._dt if dt is None else finite_num(dt, "dt", lo=0.0, lo_open=True)
+        h = self._dt if dt is None else finite_num(dt, "dt", lo=DT_MIN)
         self._pipeline.step(self, h)
 
     def info(self) -> dict:

@@ -9,7 +9,7 @@ from .body import Body
 from .geometry.shapes import Circle, Polygon, Shape
 from .spring import Spring
 from .store import CIRCLE, DYNAMIC, KINDS, POLYGON, STATIC
-from .validate import checked_density, finite_num, finite_vec, friction_pair
+from .validate import checked_density, finite_num, finite_vec, friction_pair, shown
 
 
 class BodiesMixin:
@@ -23,7 +23,7 @@ class BodiesMixin:
         if not isinstance(shape, Shape):
             raise ValueError(f"shape: expected a physics.Polygon or physics.Circle, got {type(shape).__name__}")
         if not isinstance(kind, str) or kind not in KINDS:
-            raise ValueError(f"kind: must be one of {list(KINDS)}, got {kind!r}")
+            raise ValueError(f"kind: must be one of {list(KINDS)}, got {shown(kind)}")
         pos = finite_vec(position, "position")
         ang = finite_num(angle, "angle")
         vel = finite_vec(velocity, "velocity")
@@ -109,7 +109,7 @@ class BodiesMixin:
             self._remove_spring(item)
             return
         if not isinstance(item, Body) or item.world is not self or not item.alive:
-            raise ValueError(f"remove: {item!r} is not a live body or spring of this world")
+            raise ValueError(f"remove: {shown(item)} is not a live body or spring of this world")
         for sp in [sp for sp in self._spring_handles.values()
                    if sp.body_a is item or sp.body_b is item]:
             self._remove_spring(sp)

@@ -5,7 +5,7 @@ import numpy as np
 
 from .body import Body
 from .spring import Spring
-from .validate import finite_num, finite_vec
+from .validate import finite_num, finite_vec, shown
 
 
 class SpringsMixin:
@@ -22,7 +22,7 @@ class SpringsMixin:
             if b is None and field == "body_b":
                 continue
             if not isinstance(b, Body) or b.world is not self or not b.alive:
-                raise ValueError(f"{field}: expected a live body of this world, got {b!r}")
+                raise ValueError(f"{field}: expected a live body of this world, got {shown(b)}")
         if body_a is body_b:
             raise ValueError("body_b: a spring needs two different bodies (or None for a world anchor)")
         la = finite_vec(anchor_a, "anchor_a")
@@ -53,7 +53,7 @@ class SpringsMixin:
 
     def _remove_spring(self, sp: Spring) -> None:
         if sp._world is not self or not sp.alive:
-            raise ValueError(f"remove: {sp!r} is not a live spring of this world")
+            raise ValueError(f"remove: {shown(sp)} is not a live spring of this world")
         if sp.body_a.alive:
             self._touched(sp.body_a._s)
         if sp.body_b is not None and sp.body_b.alive:

@@ -13,6 +13,7 @@ from __future__ import annotations
 import importlib
 
 from ..options import SOLVERS
+from ..validate import shown
 from .base import SolverMode
 
 # mode name -> "module:Class"
@@ -44,7 +45,7 @@ def available() -> list[str]:
 def get(name: str) -> SolverMode:
     """The mode called ``name`` (ValueError for an unknown name, ImportError for a broken module)."""
     if not isinstance(name, str) or name not in _REGISTRY:
-        raise ValueError(f"unknown solver {name!r}; choose one of {list(_REGISTRY)}")
+        raise ValueError(f"unknown solver {shown(name)}; choose one of {list(_REGISTRY)}")
     if name not in _CACHE:
         mod, cls = _REGISTRY[name].split(":")
         _CACHE[name] = getattr(importlib.import_module(mod), cls)()

@@ -1,4 +1,10 @@
-"""The last finite state: saved before each step, restored when a step goes non-finite."""
+"""The last finite state: saved before each step, restored when a step goes non-finite.
+
+A step is refused when any component of a body's state is NaN or infinite, and also when
+every component is finite but an energy is not (issue 20: 48 fuzzed runs whose kinetic
+energy overflowed to inf at finite speeds of ~1e154 m/s passed a check of the state alone).
+Components are checked one by one: their sum overflows for a finite body at (1e308, 1e308).
+"""
 from __future__ import annotations
 
 import math
@@ -6,6 +12,9 @@ import math
 import numpy as np
 
 from .._jit import kernel
+from ..store import DYNAMIC
+
+STATE, ENERGY = 0, 1  # why a step is refused: a non-finite state, or a finite state whose energy is not
 
 
 @kernel
@@ -31,16 +40,73 @@ def restore_state(B, n, X, Q, Vel, W):
 
 
 @kernel
-def count_nonfinite(B, n, out):
-    """Writes the slots whose state is NaN or infinite into ``out``; returns how many."""
+def finite_state(B, i):
+    """Each component of body i's state is finite."""
+    return (math.isfinite(B.x[i, 0]) and math.isfinite(B.x[i, 1]) and math.isfinite(B.q[i])
+            and math.isfinite(B.v[i, 0]) and math.isfinite(B.v[i, 1]) and math.isfinite(B.w[i]))
+
+
+@kernel
+def spring_energy(B, S, s):
+    """Elastic energy 1/2 k (|d| - l0)^2 of spring s (J); inf when it overflows."""
+    a = S.a[s]
+    b = S.b[s]
+    ca = math.cos(B.q[a])
+    sa = math.sin(B.q[a])
+    px = B.x[a, 0] + ca * S.la[s, 0] - sa * S.la[s, 1]
+    py = B.x[a, 1] + sa * S.la[s, 0] + ca * S.la[s, 1]
+    if b >= 0:
+        cb = math.cos(B.q[b])
+        sb = math.sin(B.q[b])
+        qx = B.x[b, 0] + cb * S.lb[s, 0] - sb * S.lb[s, 1]
+        qy = B.x[b, 1] + sb * S.lb[s, 0] + cb * S.lb[s, 1]
+    else:
+        qx = S.lb[s, 0]
+        qy = S.lb[s, 1]
+    stretch = math.hypot(px - qx, py - qy) - S.rest[s]
+    return 0.5 * S.k[s] * stretch * stretch
+
+
+@kernel
+def count_nonfinite(B, n, S, ns, out, why):
+    """Writes the slots whose state is NaN or infinite into ``out``; returns how many.
+
+    When every state is finite but the kinetic energy (a body's or the total, as
+    measures.kinetic_energy sums it) or the springs' elastic energy is not, ``why[0]`` is
+    ENERGY and ``out[0]`` the body with the largest kinetic energy, or the overflowing
+    spring's first body; otherwise ``why[0]`` is STATE."""
     k = 0
+    total = 0.0
+    worst = -1
+    top = -1.0
+    why[0] = STATE
     for i in range(n):
-        s = B.x[i, 0] + B.x[i, 1] + B.q[i] + B.v[i, 0] + B.v[i, 1] + B.w[i]
-        if not math.isfinite(s):
+        if not finite_state(B, i):
             if k < out.shape[0]:
                 out[k] = i
             k += 1
-    return k
+            continue
+        if B.kind[i] != DYNAMIC:
+            continue
+        e = 0.5 * (B.m[i] * (B.v[i, 0] * B.v[i, 0] + B.v[i, 1] * B.v[i, 1]) + B.inertia[i] * B.w[i] * B.w[i])
+        total += e
+        if not e <= top:
+            top = e
+            worst = i
+    if k > 0:
+        return k
+    why[0] = ENERGY
+    if not math.isfinite(total) and worst >= 0:
+        out[0] = worst
+        return 1
+    elastic = 0.0
+    for s in range(ns):
+        elastic += spring_energy(B, S, s)
+        if not math.isfinite(elastic):
+            out[0] = S.a[s]
+            return 1
+    why[0] = STATE
+    return 0
 
 
 class Checkpoint:
@@ -49,6 +115,7 @@ class Checkpoint:
     def __init__(self):
         self._alloc(64)
         self.bad = np.zeros(16, dtype=np.int64)
+        self.why = np.zeros(1, dtype=np.int64)
 
     def _alloc(self, cap):
         self.X = np.zeros((cap, 2))
@@ -67,9 +134,15 @@ class Checkpoint:
     def restore(self, B, n):
         restore_state(B, n, self.X, self.Q, self.V, self.W)
 
-    def nonfinite(self, B, n) -> list[int]:
-        return self.slots(count_nonfinite(B, n, self.bad))
+    def nonfinite(self, B, n, S, ns) -> list[int]:
+        """The first slots whose state (or energy: ``self.why``) is not finite now."""
+        return self.slots(count_nonfinite(B, n, S, ns, self.bad, self.why))
 
     def slots(self, k: int) -> list[int]:
         """The first non-finite slots found by a count of ``k``."""
         return [int(s) for s in self.bad[: min(k, len(self.bad))]]
+
+    @property
+    def energy(self) -> bool:
+        """The last check refused finite states for their energy."""
+        return int(self.why[0]) == ENERGY

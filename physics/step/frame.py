@@ -19,10 +19,12 @@ def begin_step(ctx, B, V, X, Q, Vel, W):
 
 
 @kernel
-def end_step(ctx, B, bad):
-    """Count non-finite bodies (slots into ``bad``); clear user forces when all is finite."""
-    n = ctx[0].n
-    k = count_nonfinite(B, n, bad)
+def end_step(ctx, B, S, bad, why):
+    """Count bodies whose state or energy is not finite (slots into ``bad``, the reason in
+    ``why``: checkpoint.count_nonfinite); clear user forces when all is finite."""
+    c = ctx[0]
+    n = c.n
+    k = count_nonfinite(B, n, S, c.ns, bad, why)
     if k == 0:
         for i in range(n):
             B.f[i, 0] = 0.0

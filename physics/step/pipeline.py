@@ -94,7 +94,8 @@ class Pipeline:
         B = s.bodies.view
         if geometry:
             self.refresh_geometry(world, dt)
-        self.npairs, self._pairs = broadphase.find_pairs(B, s.bodies.n, world.broadphase, self._pairs)
+        self.npairs, self._pairs = broadphase.find_pairs(B, s.bodies.n, world.broadphase, self._pairs,
+                                                         world.max_pairs)
         self.profile.stamp("broadphase")
         narrowphase.collide(self.ctx, B, s.verts.view, self._pairs, self.npairs, s.contacts)
         self.ctx.set("nc", s.contacts.n)
@@ -113,14 +114,12 @@ class Pipeline:
             self.n_awake = -1
         self.profile.stamp("islands")
 
-    STAGES = ("collide", "solve", "sleep")
-
     # -- the step -------------------------------------------------------
     def step(self, world, dt: float) -> None:
         store = world._store
         n = store.bodies.n
         if n == 0 or (self.n_awake == 0 and world.sleeping):
-            world.time += dt
+            world._time += dt
             world.steps += 1
             return
         self.profile.start()
@@ -143,37 +142,47 @@ class Pipeline:
             err.stage = err.stage or stage
             world.fault = err
             raise
-        k = end_step(self.ctx.array, B, ck.bad)
+        except ArithmeticError as exc:
+            # Python-side arithmetic of a stage overflowed (a rate or count out of the float
+            # range): the step's numbers are not representable, which is a refused step too
+            self._revert(world)
+            err = SimulationError(f"step at t={world.time:.4f} s: arithmetic failed in the '{stage}' stage "
+                                  f"of solver '{world.solver}' ({type(exc).__name__}: {exc}); the world was "
+                                  "reverted to the state before the step", stage=stage)
+            world.fault = err
+            raise err from exc
+        k = end_step(self.ctx.array, B, store.springs.view, ck.bad, ck.why)
         if k:
-            self._fail(world, dt, ck.slots(k))
+            self._fail(world, ck.slots(k))
         self.profile.stamp("finish")
         self.profile.finish()
-        world.time += dt
+        world._time += dt
         world.steps += 1
         world.fault = None
 
-    def _fail(self, world, dt: float, bad: list[int]) -> None:
-        """Revert, replay stage by stage to find the culprit, revert again, report."""
+    #: the stages that write the bodies' state (x, q, v, w); the others read it (collision) or
+    #: only zero velocities (islands), so a non-finite state after the step is theirs
+    STATE_STAGES = ("solve",)
+
+    def _fail(self, world, bad: list[int]) -> None:
+        """Revert and report a step whose state (or energy) is not finite."""
         store = world._store
         B = store.bodies.view
+        energy = self._checkpoint.energy
         n = store.bodies.n
         self._checkpoint.restore(B, n)
-        stage = "?"
-        for name in self.STAGES:
-            try:
-                getattr(self, name)(world, dt)
-            except SimulationError:
-                stage = name
-                break
-            if self._checkpoint.nonfinite(B, n):
-                stage = name
-                break
+        # the saved state itself not finite: it was written past the validated setters
+        stage = "begin" if self._checkpoint.nonfinite(B, n, store.springs.view, store.springs.n) \
+            else self.STATE_STAGES[-1]
         self._revert(world)
         # static bodies only turn non-finite through 0 * inf; name the moving culprits first
         moving = [s for s in bad if B.kind[s] != STATIC]
         names = [world._handles[int(B.id[s])].name or f"#{int(B.id[s])}" for s in (moving or bad)]
+        what = "a non-finite energy (finite state, kinetic or elastic energy beyond 1.8e308 J)" if energy \
+            else "non-finite values"
+        verb = "started from" if stage == "begin" else "produced"
         err = SimulationError(
-            f"step at t={world.time:.4f} s produced non-finite values in {len(names)} bod"
+            f"step at t={world.time:.4f} s {verb} {what} in {len(names)} bod"
             f"{'y' if len(names) == 1 else 'ies'} ({', '.join(names[:8])}) during the '{stage}' stage "
             f"of solver '{world.solver}'; the world was reverted to the state before the step",
             bodies=names, stage=stage)

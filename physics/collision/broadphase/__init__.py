@@ -12,6 +12,7 @@ import numpy as np
 
 from ...options import BROADPHASES
 from .brute import brute_pairs
+from .limit import MAX_PAIRS, check_pairs
 from .quadtree import build as _build_quadtree
 from .quadtree import quadtree_pairs
 from .sweep import sweep_pairs
@@ -80,15 +81,18 @@ def _run(B, n, method, pairs):
     return k
 
 
-def find_pairs(B, n, method, pairs):
+def find_pairs(B, n, method, pairs, limit=MAX_PAIRS):
     """Interacting overlapping pairs (i < j), sorted; returns (count, pairs).
 
     ``pairs`` is an int32 (P, 2) buffer; when the pairs do not fit, a larger
-    buffer is made, filled by one more kernel call, and returned.
+    buffer is made, filled by one more kernel call, and returned.  More than
+    ``limit`` pairs is SimulationError, before anything is allocated for them
+    (limit.py).
     """
     m = resolve(method, n)
     _S.ensure(n, len(pairs))
     count = int(_run(B, n, m, pairs))
+    check_pairs(count, limit, n)
     if count > len(pairs):
         pairs = np.empty((count + count // 2 + 16, 2), np.int32)
         _S.ensure(n, len(pairs))

@@ -110,11 +110,14 @@ class SeedMode(SolverMode):
             return 1
         dt = float(ctx.get("dt"))
         integrator = self.integrator_name(ctx)
-        need = substeps_for(rate, dt, integrator)
         limit = int(par.get("max_substeps"))
+        # compared as floats first: rate * dt may overflow an integer (or be inf / nan)
+        want = rate * dt / LIMITS[integrator]
+        need = substeps_for(rate, dt, integrator) if want <= limit else math.inf
         if need > limit:
+            shown = f"{need}" if need < math.inf else f"{want:.3g}"
             raise SimulationError(
-                f"solver '{self.name}': a spring or contact of rate {rate:.4g} 1/s needs {need} sub-steps "
+                f"solver '{self.name}': a spring or contact of rate {rate:.4g} 1/s needs {shown} sub-steps "
                 f"of {integrator} at dt={dt:.4g} s (omega h <= {LIMITS[integrator]}), more "
                 f"than max_substeps={limit}; raise max_substeps, lower the stiffness or dt",
                 stage="solve")
