@@ -21,6 +21,7 @@ while this process compiles (see ``busy``).
 from __future__ import annotations
 
 import json
+import os
 import threading
 import time
 import traceback
@@ -70,6 +71,8 @@ class Warmup:
         mine, theirs = compile_units.gate_units(*self.key)
         self.final = "step:" + ":".join(self.key)
         background = [u for u in compile_units.background_units(*self.key) if not self.cached(u)]
+        if os.environ.get("STELKROPP_BACKGROUND_COMPILE", "1") == "0":
+            background = []     # other modes only when switched to (e.g. a CI box with one core)
         if all(self.cached(u) for u in mine + theirs + [self.final]):
             mine, theirs = mine + theirs, []          # all on disk: loading here is quicker
         self.mine, self.theirs = mine, theirs
