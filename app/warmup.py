@@ -73,8 +73,9 @@ class Warmup:
         background = [u for u in compile_units.background_units(*self.key) if not self.cached(u)]
         if os.environ.get("STELKROPP_BACKGROUND_COMPILE", "1") == "0":
             background = []     # other modes only when switched to (e.g. a CI box with one core)
-        if all(self.cached(u) for u in mine + theirs + [self.final]):
-            mine, theirs = mine + theirs, []          # all on disk: loading here is quicker
+        self.warm = all(self.cached(u) for u in mine + theirs + [self.final])
+        if self.warm:
+            mine, theirs = [], []      # all on disk: one probe step here loads it all, at once
         self.mine, self.theirs = mine, theirs
         self.helper = CompileHelper(self._changed) if helper and (theirs or background) else None
         # when the helper is done with its share first, it takes this process's last units
@@ -116,11 +117,14 @@ class Warmup:
 
     # -- running -----------------------------------------------------------------------
     def start(self):
-        if self.helper is not None:
-            self.helper.queue = list(self._initial_queue)
-            self.helper.start()
+        if self.helper is not None and not self.warm:
+            self._start_helper()
         self.thread.start()
         return self
+
+    def _start_helper(self):
+        self.helper.queue = list(self._initial_queue)
+        self.helper.start()
 
     def close(self) -> None:
         """Stop the helper process (the sandbox is closing)."""
@@ -164,7 +168,8 @@ class Warmup:
         self._drawn.set()
 
     def _run(self):
-        self._drawn.wait(FIRST_FRAME_WAIT)
+        if not self.warm:      # a cold compile would hold up the first frame; loading would not
+            self._drawn.wait(FIRST_FRAME_WAIT)
         t_cold = self.counter.n
         pending = []
         for u in self.mine:
@@ -179,6 +184,8 @@ class Warmup:
         self.warmed.add(self.key)
         self.t_gate = time.monotonic() - self.t0
         self._ready = True
+        if self.helper is not None and self.warm:
+            self._start_helper()       # the background units, now that the scene runs
         self._serve()
 
     def _save_counts(self, compiled_here: int) -> None:

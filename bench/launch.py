@@ -149,6 +149,8 @@ def main(argv=None) -> int:
                     help="also launch this checkout's sandbox, interleaved (repeatable)")
     ap.add_argument("--timeout", type=float, default=1500)
     ap.add_argument("--json", default=None, help="write the results here")
+    ap.add_argument("--cache-root", default=None,
+                    help="use this cache root as it is (kept; no cold fill before 'cached')")
     args = ap.parse_args(argv)
     roots = [ROOT] + [Path(r).resolve() for r in args.app_root]
     xvfb = None
@@ -159,10 +161,11 @@ def main(argv=None) -> int:
     try:
         for rep in range(args.repeat):
             for root in roots:
-                cache = Path(tempfile.mkdtemp(prefix="stelkropp-launch-cache-"))
+                given = args.cache_root is not None
+                cache = Path(args.cache_root) if given else Path(tempfile.mkdtemp(prefix="stelkropp-launch-cache-"))
                 try:
                     phases = args.phases.split(",")
-                    if phases[0] == "cached":      # fill the cache first (not reported)
+                    if phases[0] == "cached" and not given:      # fill the cache first (not reported)
                         launch_once(root, args.scene, cache, display, args.timeout)
                     for phase in phases:
                         r = launch_once(root, args.scene, cache, display, args.timeout)
@@ -170,7 +173,8 @@ def main(argv=None) -> int:
                         results.append(r)
                         print(f"{root.name:>12} {phase:>6}: {_fmt(r)}", flush=True)
                 finally:
-                    shutil.rmtree(cache, ignore_errors=True)
+                    if not given:
+                        shutil.rmtree(cache, ignore_errors=True)
     finally:
         if xvfb is not None:
             xvfb.terminate()
