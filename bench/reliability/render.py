@@ -4,6 +4,7 @@ from __future__ import annotations
 import platform
 import time
 
+from ..fuzz import report as fuzz_report
 from .outcome import HELD
 from .probes import PROBES
 
@@ -46,4 +47,7 @@ def render(results: dict, modes: list[str], quick: bool, elapsed: float) -> str:
     for probe in PROBES:
         lines.append(f"| {probe.name} | " + " | ".join(f"{results[probe.name][m].seconds:.1f}" for m in modes) + " |")
     lines.append("")
+    fuzz = fuzz_report.load()  # the world fuzzer's last long run (python -m bench.fuzz) is kept
+    if fuzz:
+        lines += [fuzz_report.section(fuzz), ""]
     return "\n".join(lines)
