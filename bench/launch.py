@@ -109,8 +109,8 @@ def launch_once(app_root: Path, scene: str, cache: Path, display: str, timeout: 
                     out["drawn"], out["cpu_drawn"] = t, cpu_seconds(proc.pid)
                     # an older sandbox has no progress field and draws no scene before it is ready
                     out["scene_before_ready"] = "progress" in st
-                    if "progress" in st:
-                        seen.add(round(st["progress"], 3))
+                if "progress" in st and not st.get("ready"):
+                    seen.add(round(st["progress"], 3))
                 if st.get("ready") and "ready" not in out:
                     out["ready"], out["cpu_ready"] = t, cpu_seconds(proc.pid)
                 if st.get("ready") and st.get("steps", 0) > 0:
