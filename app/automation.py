@@ -72,6 +72,12 @@ def status(app) -> dict:
                   "shown": app.bound.shown},
         "plots": [p.last for p in app.panels.stats.plots] if app.panels.show_stats else [],
         "compare": app.compare.describe(), "plot": app.panels.plot.describe(),
+        "tracers": [{"body": t.ref.obj.id if t.ref.obj is not None else None, "local": t.local, "n": t.n,
+                     "span": float(t.times[t.n - 1] - t.times[0]) if t.n else 0.0,
+                     "last": t.points[t.n - 1].tolist() if t.n else None} for t in ed.tracers.items],
+        "trail_seconds": ed.tracers.seconds, "snap": {"on": ed.snap.on, "grid": ed.snap.grid, "angle": ed.snap.angle},
+        "follow": ed.follow.obj.id if ed.follow is not None and ed.follow.obj is not None else None,
+        "clipboard": len(ed.clipboard["bodies"]) if ed.clipboard else 0, "context_menu": app.panels.context.shown,
         "compare_plots": [p.last for p in app.panels.stats.compare.plots] if app.compare.active else [],
     }
 

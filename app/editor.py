@@ -8,10 +8,13 @@ import numpy as np
 
 import physics
 
+from .clipboard import Paste, copy_bodies, paste_offset, selected_bodies
 from .commands import AddBody, Group, RemoveBodies, RemoveSpring, SetProperty, SetWorld, body_spec
 from .document import Document
 from .render.decor import Decor
+from .snapping import Snap
 from .tools import TOOLS, ToolOptions
+from .tracers import Tracers
 
 #: the step rates the sandbox accepts (Hz): below 10 Hz contacts at walking speeds tunnel; above
 #: 1000 Hz a frame (at most 4 steps) covers under 7 ms of simulated time, a slide show
@@ -33,6 +36,11 @@ class Editor:
         self.cursor = np.zeros(2)              # the world point under the pointer (m)
         self.tool_springs: set[int] = set()    # springs the tools made (the mouse joint): not the user's
         self.tool_options = ToolOptions()
+        self.colors: dict = {}                 # Ref -> (r, g, b): bodies' own colours (the inspector)
+        self.snap = Snap()                     # grid and angle snapping (G)
+        self.clipboard = None                  # what Ctrl+C copied (app.clipboard.copy_bodies)
+        self.follow = None                     # Ref of the body the camera follows (L), or None
+        self.tracers = Tracers()               # trails behind points of bodies (tracer tool, context menu)
         self.tools = {cls.name: cls(self) for cls in TOOLS}
         self.tool_names = [cls.name for cls in TOOLS]
         self.tool = self.tools["select"]
@@ -76,7 +84,11 @@ class Editor:
         self.tool_springs.clear()
         self.selection = []
         self.hovered = None
+        self.follow = None
+        places = self._color_places() if keep_camera else {}   # a reset keeps the colours by place
         self.doc = Document(world, path)
+        self.colors = {self.doc.refs.of(world.bodies[k]): c for k, c in places.items() if k < len(world.bodies)}
+        self.tracers.reset(world, self.doc.refs, keep=keep_camera)   # a reset clears the trails
         for cb in self.on_document:
             cb(world, path, keep_camera)
 
@@ -167,6 +179,41 @@ class Editor:
         self.execute(Group(cmds, "duplicate"))
         self.selection = [c.ref.obj for c in cmds]
 
+    def copy_selection(self):
+        """Ctrl+C: the selected bodies and the springs among them to the clipboard."""
+        bodies = selected_bodies(self.selection)
+        if not bodies:
+            self.hint("nothing to copy: select bodies first (click, shift-click or drag a box)", error=False)
+            return
+        self.clipboard = copy_bodies(self.world, bodies, self.tool_springs)
+        self.notify(f"copied {len(bodies)} bod{'y' if len(bodies) == 1 else 'ies'} (Ctrl+V pastes at the pointer)")
+
+    def paste(self):
+        """Ctrl+V: the clipboard's copy with its centre at the pointer (snapped), selected."""
+        if not self.clipboard:
+            self.hint("nothing to paste: copy bodies with Ctrl+C first", error=False)
+            return
+        cmd = Paste(self.clipboard, paste_offset(self.clipboard, self.snap.point(self.cursor)))
+        try:
+            self.execute(cmd)
+        except ValueError as exc:
+            self.hint(f"paste refused: {exc}")
+            return
+        self.selection = cmd.bodies()
+
+    def toggle_follow(self):
+        """L: the camera follows the selected body (again: stops)."""
+        if self.follow is not None:
+            self.follow = None
+            self.notify("camera: no longer following")
+            return
+        bodies = selected_bodies(self.selection)
+        if not bodies:
+            self.hint("select a body for the camera to follow", error=False)
+            return
+        self.follow = self.refs.of(bodies[-1])
+        self.notify(f"camera follows {bodies[-1].name or bodies[-1].id} (L again: stop)")
+
     def toggle_static(self):
         bodies = [s for s in self.selection if isinstance(s, physics.Body) and s.alive]
         if bodies:
@@ -242,6 +289,28 @@ class Editor:
             self.tool.cancel()
             self.tool = self.tools[name]
 
+    def set_color(self, body, rgb):
+        """Give ``body`` its own fill colour (r, g, b in [0, 1]; None: the palette's again).
+        ValueError names the field if a component is out of range."""
+        ref = self.refs.of(body)
+        if rgb is None:
+            self.colors.pop(ref, None)
+            return
+        rgb = tuple(float(v) for v in rgb)
+        if len(rgb) != 3 or not all(0.0 <= v <= 1.0 for v in rgb):
+            raise ValueError(f"colour: three components in [0, 1], got {rgb!r}")
+        self.colors[ref] = rgb
+
+    def color_of(self, body):
+        return self.colors.get(self.refs.of(body))
+
+    def _color_places(self):
+        """{place in world.bodies: colour} of the coloured bodies (a reset rebuilds the world in
+        the loaded scene's order, so places find the same bodies again)."""
+        index = {b.id: k for k, b in enumerate(self.world.bodies)}
+        return {index[r.obj.id]: c for r, c in self.colors.items()
+                if r.obj is not None and r.obj.alive and r.obj.id in index}
+
     def decor(self) -> Decor:
         """Selection, hover and the active tool's previews for this frame's drawing."""
         d = Decor()
@@ -254,6 +323,7 @@ class Editor:
                 d.selected_springs.add(s.id)
         if self.hovered is not None and self.hovered.alive:
             d.hovered_body = self.hovered.id
+        d.colors = {r.obj.id: c for r, c in self.colors.items() if r.obj is not None and r.obj.alive}
         d.hidden_springs |= self.tool_springs
         self.tool.decorate(d, tuple(self.cursor))
         return d

@@ -35,9 +35,12 @@ class SceneInput:
     def editor(self):
         return self.app.editor
 
-    def _call_tool(self, fn, *args):
+    def _call_tool(self, fn, p, *args):
+        """``fn(p, *args)``; a creation tool gets the point snapped to the grid while snapping."""
+        if self.editor.tool.snaps:
+            p = tuple(self.editor.snap.point(p))
         try:
-            fn(*args)
+            fn(p, *args)
         except ValueError as exc:
             self.editor.hint(f"refused: {exc}")
 
@@ -113,11 +116,22 @@ class SceneInput:
     def on_mouse_release(self, x, y, button, modifiers):
         self.on_mouse_motion(x, y, 0, 0)
         if button in (mouse.RIGHT, mouse.MIDDLE):
-            self.panning = None
+            start, self.panning = self.panning, None
+            if button == mouse.RIGHT and start is not None and abs(x - start[0]) + abs(y - start[1]) <= 3:
+                self.context_menu()
             return
         if button == mouse.LEFT and self.tool_active:
             self.tool_active = False
             self._call_tool(self.editor.tool.release, tuple(self.editor.cursor))
+
+    def context_menu(self):
+        """A right click without a drag on a body: its context menu (nothing on empty space)."""
+        try:
+            b = self.editor.world.query_point(tuple(self.editor.cursor))
+        except ValueError:
+            return
+        if b is not None:
+            self.app.panels.context.open_at(b, self.editor.cursor)
 
     def on_mouse_scroll(self, x, y, scroll_x, scroll_y):
         if not self.scene_mouse(x, y):

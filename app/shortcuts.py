@@ -19,6 +19,12 @@ def _cancel(app, shift):
     app.editor.select(None)
 
 
+def _toggle_snap(app, shift):
+    snap = app.editor.snap
+    snap.on = not snap.on
+    app.notices.notify(f"snapping {'on' if snap.on else 'off'} (grid {snap.grid:g} m, {snap.angle:g} deg)")
+
+
 def _toggle_ui(app, shift):
     app.show_ui = not app.show_ui
 
@@ -28,11 +34,15 @@ SHORTCUTS = (
     (K.Y, True, lambda app, shift: app.editor.redo()),
     (K.S, True, lambda app, shift: app.panels.focus_save_as() if shift else app.files.save()),
     (K.D, True, lambda app, shift: app.editor.duplicate_selection()),
+    (K.C, True, lambda app, shift: app.editor.copy_selection()),
+    (K.V, True, lambda app, shift: app.editor.paste()),
     (K.SPACE, False, lambda app, shift: app.sim.toggle_run()),
     (K.S, False, lambda app, shift: app.sim.step_once()),
     (K.R, False, lambda app, shift: app.files.request_reset()),
     (K.F, False, lambda app, shift: app.fit()),
     (K.H, False, _toggle_ui),
+    (K.L, False, lambda app, shift: app.editor.toggle_follow()),
+    (K.G, False, _toggle_snap),
     (K.DELETE, False, lambda app, shift: app.editor.delete_selection()),
     (K.BACKSPACE, False, lambda app, shift: app.editor.delete_selection()),
     (K.T, False, lambda app, shift: app.editor.toggle_static()),

@@ -165,7 +165,9 @@ class Sandbox(pyglet.window.Window):
             t_cmp = time.perf_counter()
             self.compare.update(phys_ms, steps)
             self.recorder.sample(self.world)
+            self.editor.tracers.sample(self.world)
             phys_ms += (time.perf_counter() - t_cmp) * 1e3
+            self.follow_camera()
             self.input.update_hover()
             upload_ms = self.build_scene(rd)
         else:
@@ -238,12 +240,24 @@ class Sandbox(pyglet.window.Window):
                             f"{'was' if n == 1 else 'were'} removed (Ctrl+Z brings {'it' if n == 1 else 'them'} back)")
         return self.world.render_data()
 
+    def follow_camera(self):
+        """Keep the followed body (L) at the middle of the free area."""
+        ref = self.editor.follow
+        if ref is None:
+            return
+        b = ref.obj
+        if b is None or not b.alive:
+            self.editor.follow = None
+            return
+        self.camera.look_at(b.center_of_mass, self.camera.scale, self.free_rect())
+
     def build_scene(self, rd=None, sim_overlays=True) -> float:
         """The world's render data -> the renderer's vertex buffers; returns the upload ms.
         ``sim_overlays``: False before the kernels are ready (no velocity or quadtree overlays)."""
         rd = self.world.render_data() if rd is None else rd
         self.rd_ids = rd.ids
         decor = self.editor.decor()
+        decor.trails = self.editor.tracers.segments()
         if self.bound.shown:
             for a, b in self.bound.outline():
                 decor.segments.append((a, b, 1.5, BOUND_COLOR))

@@ -6,6 +6,7 @@ from imgui_bundle import imgui
 
 from .base import record_window
 from .compare import CompareSection
+from .context import ContextMenu
 from .dialogs import Dialogs
 from .hits import PanelHits
 from .inspector import InspectorSection
@@ -36,6 +37,7 @@ class Panels:
         self.scene = next(s for s in self.sections if isinstance(s, SceneSection))
         self.stats = StatsWindow(app)
         self.plot = PlotTab(app)
+        self.context = ContextMenu(app)
         self.dialogs = Dialogs(app)
         self.show_stats = True
 
@@ -67,6 +69,7 @@ class Panels:
         messages(app)
         cursor_hint(app)
         self.dialogs.draw()
+        self.context.draw()
         self.tools.drop()
 
     def main_window(self):

@@ -9,6 +9,7 @@ import physics
 
 from .base import Section, record
 from .plot_tab import probe_checkboxes
+from ..render.colors import PALETTE
 from .style import DIM, ENTER, RED
 
 
@@ -33,12 +34,6 @@ class InspectorSection(Section):
             self.body(item)
         else:
             self.spring(item)
-        probe_checkboxes(app, item)
-        if ed.edit_error:
-            imgui.push_text_wrap_pos(0)
-            imgui.text_colored(RED, ed.edit_error)
-            imgui.pop_text_wrap_pos()
-            record(app, "inspector:error")
         if imgui.button("Delete (Del)"):
             ed.delete_selection()
         imgui.same_line()
@@ -47,6 +42,15 @@ class InspectorSection(Section):
         if isinstance(item, physics.Body):       # on its own line: three buttons do not fit
             if imgui.button("Static/Dynamic (T)"):
                 ed.toggle_static()
+
+    def error(self):
+        """The last refused edit, near the top where it is seen (the panel may not show its end)."""
+        ed = self.app.editor
+        if ed.edit_error:
+            imgui.push_text_wrap_pos(0)
+            imgui.text_colored(RED, ed.edit_error)
+            imgui.pop_text_wrap_pos()
+            record(self.app, "inspector:error")
 
     def edit(self, item, field, value):
         self.app.editor.set_property(item, field, value)
@@ -57,6 +61,9 @@ class InspectorSection(Section):
             f"polygon, {len(shape.vertices)} vertices"
         imgui.text(f"Body {b.name or b.id}: {desc}")
         imgui.text_colored(DIM, f"mass {b.mass:.4g} kg   inertia {b.inertia:.4g}   {'awake' if b.awake else 'asleep'}")
+        self.error()
+        probe_checkboxes(self.app, b)          # near the top: the panel may not show its end
+        self.colour(b)
         kinds = ["dynamic", "static", "kinematic"]
         ch, k = imgui.combo("kind", kinds.index(b.kind), kinds)
         if ch:
@@ -93,11 +100,34 @@ class InspectorSection(Section):
         if ch:
             self.edit(b, "name", v or None)
 
+    def colour(self, b):
+        """The body's own fill colour: a palette swatch, any colour (the editor), or the default."""
+        ed = self.app.editor
+        own = ed.color_of(b)
+        for k, hexstr in enumerate(PALETTE):
+            rgb = tuple(int(hexstr[i:i + 2], 16) / 255.0 for i in (1, 3, 5))
+            if k:
+                imgui.same_line(0, 3)
+            if imgui.color_button(f"##swatch{k}", imgui.ImVec4(*rgb, 1.0), 0, imgui.ImVec2(20, 20)):
+                ed.set_color(b, rgb)
+            record(self.app, f"inspector:swatch:{k}")
+        shown = own if own is not None else (0.31, 0.56, 0.84)
+        imgui.same_line(0, 6)
+        ch, rgb = imgui.color_edit3("##colour", list(shown), imgui.ColorEditFlags_.no_inputs.value)
+        if ch:
+            ed.set_color(b, rgb)
+        if own is not None:
+            imgui.same_line()
+            if imgui.small_button("default##colour"):
+                ed.set_color(b, None)
+
     def spring(self, sp):
         a = sp.body_a.name or sp.body_a.id
         bname = "world" if sp.body_b is None else (sp.body_b.name or sp.body_b.id)
         imgui.text(f"Spring {sp.name or sp.id}: {a} - {bname}")
         imgui.text_colored(DIM, f"length {sp.length:.3f} m")
+        self.error()
+        probe_checkboxes(self.app, sp)
         ch, v = imgui.input_float("stiffness", sp.stiffness, 10.0, 100.0, "%.2f", ENTER)
         if ch:
             self.edit(sp, "stiffness", v)

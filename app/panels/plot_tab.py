@@ -103,21 +103,28 @@ class PlotTab:
                 "plots": [p.last for u, p in self.plots.items() if u in rec.groups()]}
 
 
+#: short checkbox labels (the full name is the tooltip)
+SHORT = {"angular velocity": "ang. vel.", "kinetic energy": "KE", "potential energy": "PE"}
+
+
 def probe_checkboxes(app, item):
-    """The inspector's "plot" row: a checkbox per quantity of ``item``; ticking one brings the
-    Plot tab forward."""
+    """The inspector's "plot" row: a checkbox per quantity of ``item`` (short labels, wrapped);
+    ticking one brings the Plot tab forward."""
     rec, refs = app.recorder, app.editor.refs
     imgui.text_colored(DIM, "plot:")
     room = imgui.get_content_region_avail().x
     used = imgui.calc_text_size("plot: ").x
     for name in quantities_of(item):
-        wdt = imgui.calc_text_size(name).x + imgui.get_frame_height() + 14
+        label = SHORT.get(name, name)
+        wdt = imgui.calc_text_size(label).x + imgui.get_frame_height() + 12
         if used + wdt < room:
             imgui.same_line()
         else:
             used = 0.0
         used += wdt
-        ch, _ = imgui.checkbox(f"{name}##plot", rec.has(item, name, refs))
+        ch, _ = imgui.checkbox(f"{label}##plot", rec.has(item, name, refs))
         record(app, f"plot:q:{name}")
+        if imgui.is_item_hovered():
+            imgui.set_tooltip(f"plot {name}")
         if ch and rec.toggle(item, name, refs, app.world):
             app.panels.plot.show()

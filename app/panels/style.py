@@ -15,7 +15,7 @@ ENTER = imgui.InputTextFlags_.enter_returns_true.value
 LABELS = ("step rate (Hz)", "time scale", "new body kind", "click size (m)", "mouse joint Hz",
           "restitution", "spring k", "n-gon sides", "angle (deg)", "angular vel.", "static friction",
           "dynamic friction", "anchor a (local)", "anchor b (world)", "rest length", "narrow phase",
-          "broad phase", "integrator", "bound min (m)", "bound max (m)")
+          "broad phase", "integrator", "bound min (m)", "bound max (m)", "trail seconds")
 
 
 def label_room(extra=()) -> float:

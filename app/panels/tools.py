@@ -18,12 +18,12 @@ class ToolsSection(Section):
     def draw(self):
         ed = self.app.editor
         for i, name in enumerate(ed.tool_names):
-            if i % 3:
+            if i % 4:
                 imgui.same_line()
             active = ed.tool.name == name
             if active:
                 imgui.push_style_color(imgui.Col_.button.value, imgui.ImVec4(0.85, 0.55, 0.2, 0.9))
-            if imgui.button(f"{name}##tool", imgui.ImVec2(100, 0)):
+            if imgui.button(f"{name}##tool", imgui.ImVec2(75, 0)):
                 ed.set_tool(name)
             record(self.app, f"tool:{name}")
             if active:
@@ -39,6 +39,23 @@ class ToolsSection(Section):
         imgui.text_colored(DIM, "Drag box / n-gon / circle buttons into the scene to drop one.")
         imgui.pop_text_wrap_pos()
         self.options(ed.tool_options)
+        self.snapping(ed.snap)
+
+    def snapping(self, snap):
+        """Grid and angle snapping (G): creation tools and the selection handles."""
+        ch, snap.on = imgui.checkbox("snap (G)", snap.on)
+        record(self.app, "tools:snap")
+        imgui.same_line()
+        imgui.set_next_item_width(60)
+        ch1, g = imgui.input_float("m##snapgrid", snap.grid, 0, 0, "%.2f", imgui.InputTextFlags_.enter_returns_true.value)
+        imgui.same_line()
+        imgui.set_next_item_width(50)
+        ch2, a = imgui.input_float("deg##snapangle", snap.angle, 0, 0, "%.0f", imgui.InputTextFlags_.enter_returns_true.value)
+        if ch1 or ch2:
+            try:
+                snap.set_steps(g, a)
+            except ValueError as exc:
+                self.app.editor.notify(f"refused: {exc}", error=True)
 
     @staticmethod
     def options(o):

@@ -25,8 +25,30 @@ class ViewSection(Section):
         ch, app.panels.show_stats = imgui.checkbox("stats window", app.panels.show_stats)
         if imgui.button("Fit scene (F)"):
             app.fit()
+        imgui.same_line()
+        ch, on = imgui.checkbox("follow selected (L)", app.editor.follow is not None)
+        if ch and on != (app.editor.follow is not None):
+            app.editor.toggle_follow()
+        self.trails(app)
         self.bound(app)
         imgui.text_colored(DIM, "Pan: right/middle drag.  Zoom: wheel.  Undo: Ctrl+Z, redo: Ctrl+Shift+Z.")
+
+    def trails(self, app):
+        """Tracers (tracer tool, or right-click a body): how long a trail is kept; clear them."""
+        tr = app.editor.tracers
+        imgui.separator_text("tracers")
+        ch, v = imgui.input_float("trail seconds", tr.seconds, 0.5, 2.0, "%.1f", ENTER)
+        record(app, "view:trail_seconds")
+        if ch:
+            try:
+                tr.set_seconds(v)
+                self.error = ""
+            except ValueError as exc:
+                self.error = str(exc)
+                app.notices.notify(f"refused: {exc}", error=True)
+        imgui.same_line()
+        if imgui.button(f"remove all ({len(tr.items)})"):
+            tr.items = []
 
     def bound(self, app):
         """The world bound: shown, editable; bodies that cross it are removed (undoable)."""

@@ -20,6 +20,9 @@ DYNAMIC_LINE = _rgba("#d8ecff")
 SLEEP_LINE = _rgba("#8ea4bb")
 SELECT_FILL, SELECT_LINE = _rgba("#f0a040"), _rgba("#fff2c0")
 HOVER_TINT = 0.22
+#: the inspector's colour swatches: a soft palette that reads on the dark background
+PALETTE = ("#4f8fd6", "#e07a5f", "#f2cc8f", "#81b29a", "#9d8df1", "#f28cb1", "#5ec8d8", "#c9d36a")
+SLEEP_DIM = 0.62          # a sleeping body's own colour is dimmed and greyed by this much
 SPRING_COLOR = _rgba("#e8c45a")
 SPRING_SELECTED = _rgba("#fff2c0")
 CONTACT_COLOR = _rgba("#ff5a5a")

@@ -13,7 +13,7 @@ import numpy as np
 from OpenGL import GL
 
 from .colors import (AABB_COLOR, COM_COLOR, COM_EDGE, CONTACT_COLOR, DYNAMIC_FILLS, DYNAMIC_LINE, HOVER_TINT,
-                     KINEMATIC_FILL, KINEMATIC_LINE, NORMAL_COLOR, QUADTREE_COLOR, SELECT_FILL, SELECT_LINE,
+                     KINEMATIC_FILL, KINEMATIC_LINE, NORMAL_COLOR, QUADTREE_COLOR, SELECT_FILL, SELECT_LINE, SLEEP_DIM,
                      SLEEP_FILL, SLEEP_LINE, SPRING_COLOR, SPRING_SELECTED, STATIC_FILL, STATIC_LINE,
                      VEL_COLOR)
 from .decor import Decor, Overlays
@@ -57,6 +57,13 @@ class Renderer:
         asleep = (rd.awake == 0) & (kind == 0)
         fill[asleep] = SLEEP_FILL
         line[asleep] = SLEEP_LINE
+        if decor.colors:
+            own = np.isin(rd.ids, np.fromiter(decor.colors, np.int64))
+            idx = np.nonzero(own)[0]
+            fill[idx, :3] = np.array([decor.colors[int(i)] for i in rd.ids[idx]], F32)
+            dim = idx[asleep[idx]]            # sleeping: the own colour dimmed towards grey
+            grey = fill[dim, :3].mean(axis=1, keepdims=True)
+            fill[dim, :3] = SLEEP_DIM * (0.5 * fill[dim, :3] + 0.5 * grey)
         st = kind == 1
         fill[st], line[st] = STATIC_FILL, STATIC_LINE
         kin = kind == 2
@@ -116,6 +123,9 @@ class Renderer:
         if overlays.contacts and len(rd.contact_points):
             p = rd.contact_points
             segs.append(thick_segments(p, p + rd.contact_normals * (22.0 / scale), 1.5, NORMAL_COLOR, scale))
+        if decor.trails is not None:
+            p0, p1, col = decor.trails
+            segs.append(thick_segments(p0, p1, 2.0, col.astype(F32), scale))
         if decor.segments:
             p0 = np.array([s[0] for s in decor.segments], dtype=np.float64)
             p1 = np.array([s[1] for s in decor.segments], dtype=np.float64)

@@ -8,7 +8,8 @@ from .ngon import NgonTool
 from .polygon import PolygonTool
 from .select import SelectTool
 from .spring import SpringTool
+from .tracer import TracerTool
 
-TOOLS = (SelectTool, BoxTool, PolygonTool, NgonTool, CircleTool, SpringTool)
+TOOLS = (SelectTool, BoxTool, PolygonTool, NgonTool, CircleTool, SpringTool, TracerTool)
 
 __all__ = ["TOOLS", "Tool", "ToolOptions", "body_args"]

@@ -37,11 +37,13 @@ class Tool:
     """A mouse tool.  ``name`` is its button label and key (its place in ``TOOLS``: keys 1..9);
     ``help`` is the one line the Tools panel shows.  Points are world metres.  A tool that also
     drops a default body when its palette button is dragged into the scene sets
-    ``droppable = True`` and implements :meth:`drop`."""
+    ``droppable = True`` and implements :meth:`drop`; a tool that picks bodies (rather than
+    placing points) sets ``snaps = False``."""
 
     name = ""
     help = ""
     droppable = False
+    snaps = True          # its points are snapped to the grid while snapping is on (G)
 
     def __init__(self, editor):
         self.editor = editor

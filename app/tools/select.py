@@ -1,5 +1,6 @@
-"""Select tool: click to select (Shift adds), drag a dynamic body on a soft mouse joint (release
-throws it), drag a static or kinematic body to move it."""
+"""Select tool: click to select (Shift adds), drag on empty space to box-select, drag a dynamic
+body on a soft mouse joint (release throws it), drag a static or kinematic body to move it, and
+the selection's move and rotate handles (``handles.py``)."""
 from __future__ import annotations
 
 import math
@@ -8,12 +9,16 @@ import numpy as np
 
 from ..commands import SetProperty
 from .base import JOINT, Tool
+from .handles import Handles
+
+BAND = (0.65, 0.8, 1.0, 0.8)
 
 
 class SelectTool(Tool):
     name = "select"
-    help = "click: select (shift: add), drag a dynamic body: pull it on a soft spring, release to throw; " \
-           "drag a static body: move it"
+    snaps = False
+    help = "click: select (shift: add); drag empty space: box select; drag a body: pull it on a " \
+           "spring (static: move it); handles: move / rotate the selection"
 
     def __init__(self, editor):
         super().__init__(editor)
@@ -21,10 +26,17 @@ class SelectTool(Tool):
         self.body = None
         self.moving = None         # (body, grab offset, start position) for static/kinematic moves
         self.cursor = None
+        self.band = None           # (start, end) world corners of a box selection, while dragging
+        self.band_add = False
+        self.handles = Handles(editor)
 
     def press(self, p, button, mods):
         from pyglet.window import key as K
         ed = self.editor
+        grip = self.handles.hit(p)
+        if grip is not None:
+            self.handles.press(p, grip)
+            return
         b = ed.world.query_point(p)
         spring = None if b is not None else ed.spring_near(p)
         if spring is not None:
@@ -33,6 +45,8 @@ class SelectTool(Tool):
         if b is None:
             if not mods & K.MOD_SHIFT:
                 ed.select(None)
+            self.band = (np.array(p, dtype=float), np.array(p, dtype=float))
+            self.band_add = bool(mods & K.MOD_SHIFT)
             return
         ed.select(b, add=bool(mods & K.MOD_SHIFT))
         self.cursor = np.array(p, dtype=float)
@@ -56,6 +70,12 @@ class SelectTool(Tool):
 
     def drag(self, p):
         self.cursor = np.array(p, dtype=float)
+        if self.handles.active is not None:
+            self.handles.drag(p)
+            return
+        if self.band is not None:
+            self.band = (self.band[0], self.cursor)
+            return
         if self.moving is not None:
             b, off, _ = self.moving
             if b.alive:
@@ -69,6 +89,12 @@ class SelectTool(Tool):
                 self.joint.anchor_b = tuple(self.cursor)
 
     def release(self, p):
+        if self.handles.active is not None:
+            self.handles.release()
+            return
+        if self.band is not None:
+            self.select_band()
+            return
         self.end_joint()
         if self.moving is not None:
             b, off, start = self.moving
@@ -86,11 +112,36 @@ class SelectTool(Tool):
             self.joint = None
             self.body = None
 
+    def select_band(self):
+        """Select the bodies whose centre lies in the band (Shift: add them); a band of a few
+        pixels is a click on empty space (the selection was cleared at the press)."""
+        (a, b), self.band = self.band, None
+        ed = self.editor
+        if np.max(np.abs(b - a)) * ed.camera.scale < 4:
+            return
+        lo, hi = np.minimum(a, b), np.maximum(a, b)
+        inside = [x for x in ed.world.bodies
+                  if np.all(lo <= x.center_of_mass) and np.all(np.asarray(x.center_of_mass) <= hi)]
+        if not self.band_add:
+            ed.select(None)
+        for x in inside:
+            if x not in ed.selection:
+                ed.select(x, add=True)
+
     def cancel(self):
         self.end_joint()
         self.moving = None
+        self.band = None
+        self.handles.cancel()
 
     def decorate(self, decor, cursor):
+        if self.band is not None:
+            a, b = self.band
+            c = [a, (b[0], a[1]), b, (a[0], b[1])]
+            for i in range(4):
+                decor.segments.append((c[i], c[(i + 1) % 4], 1.0, BAND))
+        if self.joint is None and self.moving is None:
+            self.handles.decorate(decor)
         if self.joint is not None and self.joint.alive:
             pa, pb = self.joint.endpoints()
             decor.hidden_springs.add(self.joint.id)

@@ -9,6 +9,7 @@ from .base import PREVIEW, Tool
 
 class SpringTool(Tool):
     name = "spring"
+    snaps = False
     help = "drag from a body to another body (or to empty space: a world anchor)"
 
     def __init__(self, editor):

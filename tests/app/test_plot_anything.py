@@ -19,6 +19,14 @@ def series(st, label):
     return next(s for s in st["plot"]["series"] if s["label"] == label)
 
 
+def tick(app, st, *quantities):
+    """Tick ``quantities`` in the inspector's plot row."""
+    for q in quantities:
+        app.click(*centre(st["ui_rects"][f"plot:q:{q}"]))
+        st = app.settle()
+    return st
+
+
 def tension(c, k=80.0, damping=1.0, rest=1.5, anchor_b=(0.0, 5.5)):
     """The spring "hang" of tools_scene: anchor (0, 0.5) on box c (centred, so its centre of mass
     is its position), world anchor (0, 5.5): k (L - L0) + c dL/dt, computed here from c's state."""
@@ -45,15 +53,13 @@ def test_plot_quantities_of_a_body_and_a_spring(launch, tmp_path):
     app.click(*map(int, c["screen"]))
     st = app.wait(lambda s: s["selection"] == [c["id"]], 10, "box c selected")
     st = app.settle()
-    for q in ("y", "x", "speed"):
-        app.click(*centre(st["ui_rects"][f"plot:q:{q}"]))
-        st = app.settle()
+    st = tick(app, st, "y", "x", "speed")
     st = app.wait(lambda s: len(s["plot"]["series"]) == 3 and s["plot"]["open"], 10, "three series")
     # the spring: click its coil between the world anchor and box c
     app.click(*map(int, to_screen(st, (0.0, 5.3))))
     st = app.wait(lambda s: s["selection"] and s["selection"][0] != c["id"], 10, "the spring selected")
     st = app.settle()
-    app.click(*centre(st["ui_rects"]["plot:q:force"]))
+    st = tick(app, st, "force")
     st = app.wait(lambda s: len(s["plot"]["series"]) == 4, 10, "four series")
     assert all(s["n"] <= 1 for s in st["plot"]["series"]), "samples recorded while paused (one: the start)"
     app.xdo("mousemove", 700, 150)

@@ -1,0 +1,76 @@
+"""Copy and paste of bodies (and the springs among them): Ctrl+C keeps their specs, Ctrl+V adds
+a copy with the copied group's centre at the pointer (one undoable step)."""
+from __future__ import annotations
+
+import numpy as np
+
+import physics
+
+from .commands import SPRING_FIELDS, AddBody, AddSpring, Command, body_spec
+
+NUDGE = np.array([0.6, -0.6])     # a paste where the originals are goes beside them, not on top
+
+
+def copy_bodies(world, bodies, tool_springs=()):
+    """The clipboard for ``bodies``: their specs, the springs between them or to the world
+    (not the mouse joint's), and their centre (mean position, m)."""
+    index = {b.id: k for k, b in enumerate(bodies)}
+    springs = []
+    for sp in world.springs:
+        if sp.id in tool_springs or sp.body_a.id not in index:
+            continue
+        if sp.body_b is not None and sp.body_b.id not in index:
+            continue
+        springs.append((index[sp.body_a.id], None if sp.body_b is None else index[sp.body_b.id],
+                        {f: getattr(sp, f) for f in SPRING_FIELDS}))
+    centre = np.mean([b.position for b in bodies], axis=0)
+    return {"bodies": [body_spec(b) for b in bodies], "springs": springs, "centre": centre}
+
+
+class Paste(Command):
+    """Add the clipboard's bodies moved by ``offset`` (m) and their springs (world anchors moved
+    too); names are dropped (they must stay unique)."""
+
+    def __init__(self, clip, offset):
+        off = np.asarray(offset, dtype=np.float64)
+        self.adds = []
+        for spec in clip["bodies"]:
+            spec = dict(spec, name=None, position=tuple(np.asarray(spec["position"]) + off))
+            self.adds.append(AddBody(spec, "paste"))
+        self.spring_specs = []
+        for ia, ib, fields in clip["springs"]:
+            f = dict(fields, name=None)
+            if ib is None:
+                f["anchor_b"] = tuple(np.asarray(f["anchor_b"]) + off)
+            self.spring_specs.append((ia, ib, f))
+        self.spring_cmds = None
+        self.label = f"paste {len(self.adds)} bod{'y' if len(self.adds) == 1 else 'ies'}"
+
+    def do(self, app):
+        for c in self.adds:
+            c.do(app)
+        if self.spring_cmds is None:
+            self.spring_cmds = [AddSpring({"a": self.adds[ia].ref, "b": None if ib is None else self.adds[ib].ref,
+                                           **f}) for ia, ib, f in self.spring_specs]
+        for c in self.spring_cmds:
+            c.do(app)
+
+    def undo(self, app):
+        for c in reversed(self.spring_cmds or []):
+            c.undo(app)
+        for c in reversed(self.adds):
+            c.undo(app)
+
+    def bodies(self):
+        return [c.ref.obj for c in self.adds]
+
+
+def paste_offset(clip, at):
+    """Where a paste goes: the clipboard's centre at world point ``at``, nudged aside if that is
+    where the originals are."""
+    off = np.asarray(at, dtype=np.float64) - clip["centre"]
+    return NUDGE if np.hypot(*off) < 0.05 else off
+
+
+def selected_bodies(selection):
+    return [s for s in selection if isinstance(s, physics.Body) and s.alive]
