@@ -157,3 +157,7 @@ def test_shipped_scene_renders_120_frames(scene, app_env, tmp_path):
     img = np.asarray(Image.open(shot).convert("RGB")).astype(int)
     assert img.shape[:2] == (800, 1280)
     assert body_pixels(img, 0, 1280, 0, 800) > 300, "nothing drawn"
+    # issue 16 item 5: the scene is drawn in the free area beside the panels at 1280x800
+    fx0, fy0, fx1, fy1 = map(int, st["free_rect"])
+    assert body_pixels(img, fx0, fx1, fy0, fy1) > 300, "nothing drawn in the free area"
+
