@@ -17,6 +17,7 @@ import numpy as np
 import physics
 from physics import options
 
+from . import compile_units
 from .document import restore, snapshot
 from .stats import Stats
 
@@ -131,7 +132,7 @@ class Comparison:
                 rival.settings_for(solver).update(settings)
             label = lane_label(solver, integ, settings, w)
             self.lanes.append(Lane(label, rival, LANE_COLORS[k + 1], solver, integ))
-            self.app.warmup.prioritize(solver, integ)
+            self.app.warmup.prioritize(solver, integ, compile_units.broadphase_of(rival))
         self.main = LaneStats()
         self.main_e0 = total_energy(w)
         self._base_steps = self._last_steps = w.steps
@@ -192,8 +193,9 @@ class Comparison:
         if owed <= 0:
             return False
         warm = self.app.warmup
-        if not warm.can_step(lane.solver, lane.integrator):
-            warm.prioritize(lane.solver, lane.integrator)
+        bp = compile_units.broadphase_of(lane.world)
+        if not warm.can_step(lane.solver, lane.integrator, bp):
+            warm.prioritize(lane.solver, lane.integrator, bp)
             lane.waiting = f"compiling {lane.solver} ({lane.integrator}) ..."
             return False
         lock = self.app.sim.lock
