@@ -58,8 +58,8 @@ def _ratio_lines(res):
             txt += (f"; {r['ratio_box2d_v3']:.2f}x Box2D v3 ({fmt(b3 and b3.get('ms_step'))} ms, "
                     "measured in this run)")
         else:
-            why = (res.get("meta", {}).get("engines_skipped") or {}).get("box2d_v3", "not run")
-            txt += f"; Box2D v3 not measured ({why})"
+            why = (res.get("meta", {}).get("engines_skipped") or {}).get("box2d_v3")
+            txt += f"; Box2D v3 not measured ({why or 'not part of this run: python -m bench times it'})"
         L.append(txt)
     return L
 
