@@ -57,14 +57,17 @@ class Body:
 
     @property
     def id(self) -> int:
+        """Stable integer id of this body (never reused in its world)."""
         return self._id
 
     @property
     def alive(self) -> bool:
+        """False once the body was removed from its world (the handle then refuses to read or write)."""
         return self._id in self._world._bodies.slot_of
 
     @property
     def world(self):
+        """The World this body belongs to."""
         return self._world
 
     # -- state ---------------------------------------------------------
@@ -84,11 +87,13 @@ class Body:
 
     @property
     def center_of_mass(self) -> tuple[float, float]:
+        """World position (m) of the centre of mass (the origin plus the shape's centroid, turned by the angle)."""
         s = self._s
         return (float(self._B.x[s, 0]), float(self._B.x[s, 1]))
 
     @property
     def angle(self) -> float:
+        """Orientation in radians (counter-clockwise, unbounded: turns accumulate). ValueError for a non-finite value."""
         return float(self._B.q[self._s])
 
     @angle.setter
@@ -102,6 +107,7 @@ class Body:
 
     @property
     def velocity(self) -> tuple[float, float]:
+        """Linear velocity (m/s) of the centre of mass, as (vx, vy). ValueError for a non-finite or malformed pair."""
         s = self._s
         return (float(self._B.v[s, 0]), float(self._B.v[s, 1]))
 
@@ -112,6 +118,7 @@ class Body:
 
     @property
     def angular_velocity(self) -> float:
+        """Angular velocity in rad/s (counter-clockwise positive). ValueError for a non-finite value."""
         return float(self._B.w[self._s])
 
     @angular_velocity.setter
@@ -122,6 +129,7 @@ class Body:
     # -- properties ----------------------------------------------------
     @property
     def mass(self) -> float:
+        """Mass in kg (density x area; 0 for static and kinematic bodies, which do not respond to forces)."""
         return float(self._B.m[self._s])
 
     @property
@@ -131,6 +139,7 @@ class Body:
 
     @property
     def density(self) -> float:
+        """Density in kg/m^2 (> 0); setting it recomputes mass and inertia. ValueError for zero, negative, non-finite or mass-overflowing values."""
         return float(self._B.density[self._s])
 
     @density.setter
@@ -141,6 +150,7 @@ class Body:
 
     @property
     def kind(self) -> str:
+        """"dynamic", "static" or "kinematic"; setting it recomputes the mass (a static body stops). ValueError for another value."""
         return KIND_NAMES[int(self._B.kind[self._s])]
 
     @kind.setter
@@ -157,6 +167,7 @@ class Body:
 
     @property
     def restitution(self) -> float:
+        """Coefficient of restitution in [0, 1]: 0 no bounce, 1 elastic. A contact uses the larger of its two bodies'. ValueError outside [0, 1] or non-finite."""
         return float(self._B.e[self._s])
 
     @restitution.setter
@@ -177,6 +188,7 @@ class Body:
 
     @property
     def static_friction(self) -> float:
+        """Coulomb friction coefficient while sticking (>= 0); a contact combines the two bodies' by the geometric mean. ValueError for negative or non-finite values."""
         return float(self._B.mu_s[self._s])
 
     @static_friction.setter
@@ -185,6 +197,7 @@ class Body:
 
     @property
     def dynamic_friction(self) -> float:
+        """Coulomb friction coefficient while sliding (>= 0); a contact combines the two bodies' by the geometric mean. ValueError for negative or non-finite values."""
         return float(self._B.mu_d[self._s])
 
     @dynamic_friction.setter
@@ -193,6 +206,7 @@ class Body:
 
     @property
     def name(self):
+        """Optional unique name (str or None); world.body(name) finds it. ValueError when another body has it."""
         return self._world._name_of_body(self._id)
 
     @name.setter
@@ -201,21 +215,26 @@ class Body:
 
     @property
     def awake(self) -> bool:
+        """False while the body sleeps (it and its island are at rest and not simulated)."""
         return bool(self._B.awake[self._s])
 
     def wake(self) -> None:
+        """Wake this body and its island (sleeping bodies are not simulated until woken or touched)."""
         self._world._touched(self._s)
 
     # -- geometry and forces -------------------------------------------
     def local_to_world(self, point) -> tuple[float, float]:
+        """The world position (m) of ``point`` given in this body's coordinates. ValueError for a malformed point."""
         p = np.array(self.position) + self._rot() @ finite_vec(point, "point")
         return (float(p[0]), float(p[1]))
 
     def world_to_local(self, point) -> tuple[float, float]:
+        """The body-coordinate position of world ``point`` (m). ValueError for a malformed point."""
         p = self._rot().T @ (finite_vec(point, "point") - np.array(self.position))
         return (float(p[0]), float(p[1]))
 
     def velocity_at(self, point) -> tuple[float, float]:
+        """Velocity (m/s) of the body's material at world ``point``: v + w x r. ValueError for a malformed point."""
         s = self._s
         r = finite_vec(point, "point") - self._B.x[s]
         w = self._B.w[s]

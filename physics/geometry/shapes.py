@@ -109,6 +109,7 @@ class Polygon(Shape):
     """
 
     kind = "polygon"
+    """The shape type's name in scene files: "polygon"."""
 
     def __init__(self, vertices, *, _spec=None):
         pts = _as_points(vertices)
@@ -129,6 +130,7 @@ class Polygon(Shape):
             area = -area
         _check_convex(pts, scale)
         self.vertices = pts
+        """Vertices in body coordinates (m), counter-clockwise, as a read-only (n, 2) array."""
         self.vertices.setflags(write=False)
         self._spec = _spec if _spec is not None else {"polygon": pts.tolist()}
         with np.errstate(over="ignore"):  # overflow is what the check looks for
@@ -192,15 +194,18 @@ class Polygon(Shape):
 
     @property
     def bounding_radius(self) -> float:
+        """Radius (m) of the smallest circle about the body origin holding every vertex."""
         c = self.centroid
         return float(np.max(np.hypot(*(self.vertices - c).T)))
 
     @property
     def area(self) -> float:
+        """Area in m^2 (> 0: counter-clockwise vertices)."""
         return _signed_area(self.vertices - self.vertices.mean(axis=0))
 
     @property
     def centroid(self) -> np.ndarray:
+        """Area centre in body coordinates (m), as a 2-array."""
         # taken about the vertex mean: cross products of raw coordinates far
         # from the origin cancel catastrophically (off by 4e-3 m at 1e5 m)
         o = self.vertices.mean(axis=0)
@@ -240,6 +245,7 @@ class Circle(Shape):
     """A disc of ``radius`` centred at ``offset`` in body coordinates."""
 
     kind = "circle"
+    """The shape type's name in scene files: "circle"."""
 
     def __init__(self, radius: float, offset=(0.0, 0.0)):
         """``radius`` (m, > 0) and ``offset`` (m, the centre in body coordinates); ValueError for
@@ -249,28 +255,35 @@ class Circle(Shape):
         _check_mass_scale(area, 0.5 * area * r * r, "circle", 2 * r)
         off = _as_points([offset], "offset")[0]
         self.radius = r
+        """Radius in metres (> 0)."""
         self.offset = off
+        """Centre of the disc in body coordinates (m), as a 2-array."""
         self.offset.setflags(write=False)
 
     @property
     def spec(self) -> dict:
+        """The circle as scene-file data (what save_scene writes): radius and offset."""
         if np.any(self.offset):
             return {"circle": {"radius": self.radius, "offset": self.offset.tolist()}}
         return {"circle": self.radius}
 
     @property
     def bounding_radius(self) -> float:
+        """Radius (m) of the smallest circle about the body origin holding the disc: |offset| + radius."""
         return self.radius
 
     @property
     def area(self) -> float:
+        """Area in m^2: pi r^2."""
         return math.pi * (self.radius * self.radius)
 
     @property
     def centroid(self) -> np.ndarray:
+        """The disc's centre in body coordinates (m): its offset."""
         return self.offset.copy()
 
     def mass_properties(self, density: float):
+        """(mass kg, centre (2,), inertia about the centre kg m^2 = m r^2 / 2) for ``density`` in kg/m^2."""
         m = density * self.area
         return m, self.offset.copy(), 0.5 * m * (self.radius * self.radius)
 
