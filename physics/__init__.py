@@ -10,10 +10,11 @@ from . import _jit  # noqa: F401  (configures numba's cache before any kernel is
 from .body import Body
 from .errors import SceneError, SimulationError
 from .geometry.shapes import Circle, Polygon
+from .joint import Joint
 from .spring import Spring
 from .world import World
 
-__all__ = ["World", "Body", "Spring", "Polygon", "Circle", "SceneError", "SimulationError",
+__all__ = ["World", "Body", "Spring", "Joint", "Polygon", "Circle", "SceneError", "SimulationError",
            "load_scene", "save_scene", "solvers_available", "tune"]
 
 

@@ -6,6 +6,7 @@ from collections import namedtuple
 import numpy as np
 
 from .store import CIRCLE
+from .store.joints import BROKEN
 
 STATE_DTYPE = np.dtype([("id", np.int64), ("position", np.float64, (2,)), ("angle", np.float64),
                         ("velocity", np.float64, (2,)), ("angular_velocity", np.float64), ("awake", np.bool_)])
@@ -14,7 +15,14 @@ Contact = namedtuple("Contact", "body_a body_b points normal depth")
 RenderData = namedtuple(
     "RenderData",
     "vertices vstart vcount kind awake shape radius center angle com ids aabb "
-    "spring_ends contact_points contact_normals")
+    "spring_ends contact_points contact_normals joints", defaults=(None,))
+
+#: one row per joint for drawing (RenderData.joints): its id and kind code (store/joints.py
+#: JOINT_KINDS), world anchors on a and b (b's is the world point for a world joint), the axis
+#: in world coordinates (prismatic, wheel), the limits (NaN: none), whether it is broken
+JOINT_DRAW_DTYPE = np.dtype([("id", np.int64), ("kind", np.int8), ("anchor_a", np.float64, (2,)),
+                             ("anchor_b", np.float64, (2,)), ("axis", np.float64, (2,)),
+                             ("lower", np.float64), ("upper", np.float64), ("broken", np.bool_)])
 
 
 def state(world) -> np.ndarray:
@@ -94,7 +102,31 @@ def render_data(world) -> RenderData:
     nrm = np.repeat(c.cur.normal[: c.n], cnt, axis=0)
     return RenderData(V.world[: st.verts.top], B.vstart[:n], B.vcount[:n], B.kind[:n], B.awake[:n],
                       B.shape[:n], B.radius[:n], B.x[:n], B.q[:n], B.com[:n], B.id[:n], B.aabb[:n],
-                      ends, pts, nrm)
+                      ends, pts, nrm, _joint_rows(st))
+
+
+def _joint_rows(st) -> np.ndarray:
+    """RenderData.joints (JOINT_DRAW_DTYPE) for the store's joints."""
+    nj = st.joints.n
+    out = np.zeros(nj, JOINT_DRAW_DTYPE)
+    if not nj:
+        return out
+    B = st.bodies.view
+    J = st.joints.view
+    out["id"] = J.id[:nj]
+    out["kind"] = J.kind[:nj]
+    out["anchor_a"] = _anchor_world(B, J.a[:nj], J.la[:nj])
+    world_b = J.b[:nj] < 0
+    out["anchor_b"] = np.where(world_b[:, None], J.lb[:nj], _anchor_world(B, np.maximum(J.b[:nj], 0), J.lb[:nj]))
+    q = B.q[J.a[:nj]]
+    c, s = np.cos(q), np.sin(q)
+    ax = J.axis[:nj]
+    out["axis"][:, 0] = c * ax[:, 0] - s * ax[:, 1]
+    out["axis"][:, 1] = s * ax[:, 0] + c * ax[:, 1]
+    out["lower"] = J.lower[:nj]
+    out["upper"] = J.upper[:nj]
+    out["broken"] = (J.flags[:nj] & BROKEN) != 0
+    return out
 
 
 def _anchor_world(B, slots, local):

@@ -19,6 +19,7 @@ from .collision.broadphase.limit import MAX_PAIRS
 from .validate import finite_num, finite_vec, flag, whole
 from .views import STATE_DTYPE, Contact, RenderData
 from .world_bodies import BodiesMixin
+from .world_joints import JointsMixin
 from .world_springs import SpringsMixin
 
 __all__ = ["World", "Contact", "RenderData", "STATE_DTYPE", "DT_MIN"]
@@ -40,12 +41,12 @@ def _tolerance(field: str, doc: str = ""):
     return property(get, put, doc=doc)
 
 
-class World(BodiesMixin, SpringsMixin):
+class World(JointsMixin, BodiesMixin, SpringsMixin):
     """A 2D rigid-body world.
 
     ``World(gravity=(0, -9.81), dt=1/60, solver="soft_step")``; add bodies with
-    :meth:`~physics.World.add_body`, springs with :meth:`~physics.World.add_spring`, advance with
-    :meth:`step`.
+    :meth:`~physics.World.add_body`, springs with :meth:`~physics.World.add_spring`, joints with
+    :meth:`~physics.World.add_joint`, advance with :meth:`step`.
     Contacts combine friction by the geometric mean and restitution by the
     maximum of the two bodies' coefficients.
 
@@ -70,6 +71,8 @@ class World(BodiesMixin, SpringsMixin):
         self._spring_handles: dict[int, Spring] = {}
         self._body_names = Names("body")
         self._spring_names = Names("spring")
+        self._joint_handles = {}
+        self._joint_names = Names("joint")
         self._settings: dict[str, ModeValues] = {}
         self._pipeline = Pipeline()
         #: what the scene file this world came from says of itself (name, description, camera);

@@ -21,6 +21,7 @@ from .. import solvers
 from ..geometry.shapes import Circle, Polygon
 from ..validate import checked_density
 from . import schema as fmt
+from .joints import joint_problems
 from .json_io import Duplicates, NonFinite
 from .problems import finish, preview, quoted, type_name
 
@@ -272,11 +273,14 @@ def hand_problems(data, bad: Rejected):
     """(problems, shapes) for the checks a schema cannot express."""
     bodies = data.get("bodies") if isinstance(data.get("bodies"), list) else []
     springs = data.get("springs") if isinstance(data.get("springs"), list) else []
+    joints = data.get("joints") if isinstance(data.get("joints"), list) else []
     world = data.get("world") if isinstance(data.get("world"), dict) else {}
     out, shapes = body_problems(bodies, bad)
     out += name_problems(bodies, "body", "bodies", bad)
     out += name_problems(springs, "spring", "springs", bad)
     out += spring_problems(bodies, springs, bad)
+    out += name_problems(joints, "joint", "joints", bad)
+    out += joint_problems(bodies, joints, bad)
     out += solver_problems(world, bad)
     return out, shapes
 

@@ -14,6 +14,7 @@ import math
 
 from ..store import KIND_NAMES
 from . import schema as fmt
+from .joints import joint_dict
 
 
 def _shortest(target: float, base: float, forward) -> float:
@@ -90,10 +91,11 @@ def spring_dict(world, sp, names) -> dict:
 
 
 def body_names(world) -> dict:
-    """id -> name; bodies that springs refer to but that have no name get a free ``bodyN``."""
+    """id -> name; bodies that springs or joints refer to but that have no name get a free ``bodyN``."""
     names = {b.id: b.name for b in world.bodies}
     taken = {n for n in names.values() if n is not None}
-    needed = {sp.body_a.id for sp in world.springs} | {sp.body_b.id for sp in world.springs if sp.body_b is not None}
+    links = list(world.springs) + list(world.joints)
+    needed = {x.body_a.id for x in links} | {x.body_b.id for x in links if x.body_b is not None}
     for i, b in enumerate(world.bodies):
         if names[b.id] is None and b.id in needed:
             name, k = f"body{i}", 0
@@ -126,4 +128,6 @@ def to_dict(world, meta: dict) -> dict:
     names = body_names(world)
     out["bodies"] = [body_dict(world, b, names[b.id]) for b in world.bodies]
     out["springs"] = [spring_dict(world, sp, names) for sp in world.springs]
+    if world.joints:
+        out["joints"] = [joint_dict(world, j, names, _anchor, _same) for j in world.joints]
     return out

@@ -100,7 +100,7 @@ def dumps(data) -> str:
     items = list(data.items())
     for i, (key, value) in enumerate(items):
         comma = "," if i < len(items) - 1 else ""
-        if key in ("bodies", "springs") and value:
+        if key in ("bodies", "springs", "joints") and value:
             lines.append(f"  {json.dumps(key)}: [")
             rows = [json.dumps(v, allow_nan=False) for v in value]
             lines += [f"    {r}," for r in rows[:-1]] + [f"    {rows[-1]}"]

@@ -11,6 +11,7 @@ import os
 
 from . import schema as fmt
 from .checks import check
+from .joints import add_joints
 from .json_io import parse, read_text
 from .problems import scene_error
 
@@ -62,6 +63,7 @@ def _build(data, shapes, source):
     by_name = {b["name"]: handles[i] for i, b in enumerate(data["bodies"]) if "name" in b}
     for i, sp in enumerate(data.get("springs", [])):
         _add_spring(world, sp, by_name, f"springs[{i}]", source)
+    add_joints(world, data.get("joints", []), by_name, scene_error, source)
     world.metadata.update({k: data[k] for k in ("name", "description", "camera") if k in data})
     return world
 

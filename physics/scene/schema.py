@@ -13,6 +13,7 @@ import json
 
 from .. import options
 from ..store import KINDS as _KIND_CODES
+from .joints import JOINT_SCHEMA
 
 FORMAT = "stelkropp.scene"
 VERSION = 1
@@ -197,6 +198,7 @@ SCHEMA = {
         "camera": {"$ref": "#/$defs/camera"},
         "bodies": {"type": "array", "items": {"$ref": "#/$defs/body"}},
         "springs": {"type": "array", "default": [], "items": {"$ref": "#/$defs/spring"}},
+        "joints": {"type": "array", "default": [], "items": {"$ref": "#/$defs/joint"}},
     },
     "$defs": {
         "vec2": _vec("[x, y]"),
@@ -204,6 +206,7 @@ SCHEMA = {
         "friction": _FRICTION,
         "body": _BODY,
         "spring": _SPRING,
+        "joint": JOINT_SCHEMA,
         "world": _WORLD,
         "camera": _CAMERA,
     },

@@ -23,6 +23,7 @@ CONTEXT_FIELDS = (
     ("n", np.int64),              # live bodies
     ("nc", np.int64),             # contact rows after the narrow phase
     ("ns", np.int64),             # springs
+    ("nj", np.int64),             # joints
     ("gx", np.float64),           # gravity (m/s^2)
     ("gy", np.float64),
     ("spec", np.float64),         # speculative distance (m)

@@ -1,6 +1,6 @@
 """Islands and sleeping.
 
-Bodies linked by touching contacts or springs form an island (union-find
+Bodies linked by touching contacts, springs or joints form an island (union-find
 over the contact graph, Tarjan 1975 with path halving).  An island sleeps
 when every body in it has stayed below the linear and angular speed
 thresholds for ``time_to_sleep``; a sleeping body is skipped by the broad
@@ -8,6 +8,9 @@ phase against static and sleeping bodies, by the solvers and by the
 integrators, so a resting pile costs almost nothing.  A sleeping island
 wakes as a whole (bodies share an island label) when an awake body or a
 moving kinematic body touches it, or when the user edits one of its bodies.
+Joints (``JL``: per unbroken joint its bodies a, b (-1: the world) and whether
+its motor is driving) join islands and carry waking across; a driving motor
+keeps its bodies awake.
 """
 from __future__ import annotations
 
@@ -15,6 +18,7 @@ import numpy as np
 
 from .._jit import kernel
 from ..store import DYNAMIC, KINEMATIC
+from ..store.joints import BROKEN, MOUSE
 
 
 @kernel
@@ -81,6 +85,34 @@ def _wake_touched(B, n, C, nc, S, ns, slop):
 
 
 @kernel
+def _wake_linked(B, n, a, b):
+    """Wake the sleeping side of a link between an awake and a sleeping dynamic body."""
+    if b < 0:
+        return
+    if B.awake[a] == 0 and B.awake[b] == 1 and B.kind[a] == DYNAMIC:
+        _wake_island(B, n, a)
+    elif B.awake[b] == 0 and B.awake[a] == 1 and B.kind[b] == DYNAMIC:
+        _wake_island(B, n, b)
+
+
+@kernel
+def _joint_links(B, n, JL, parent):
+    """Wake across joints, keep driven bodies awake, union the joined dynamic bodies."""
+    for k in range(JL.shape[0]):
+        a = JL[k, 0]
+        b = JL[k, 1]
+        _wake_linked(B, n, a, b)
+        if JL[k, 2]:
+            for s in (a, b):
+                if s >= 0 and B.kind[s] == DYNAMIC:
+                    if B.awake[s] == 0:
+                        _wake_island(B, n, s)
+                    B.sleep_t[s] = 0.0
+        if b >= 0 and B.kind[a] == DYNAMIC and B.kind[b] == DYNAMIC:
+            _union(parent, a, b)
+
+
+@kernel
 def _restless(B, i, lin_tol, ang_tol):
     """Too fast to sleep: the centre or the rim (|w| times the bounding radius, as Box2D v3
     measures rotation) moves faster than ``lin_tol``, or it spins faster than ``ang_tol``
@@ -108,11 +140,12 @@ def _wake_pushed(B, n, lin_tol, ang_tol):
 
 
 @kernel
-def update_islands(ctx, B, C, S, parent, min_t, label):
+def update_islands(ctx, B, C, S, JL, parent, min_t, label):
     """One sleep update after the solver; returns the number of awake non-static bodies.
 
-    ``parent`` and ``min_t`` are scratch arrays of at least n entries; ``label``
-    a 1-element counter for fresh island labels.
+    ``JL`` the joint links (see the module doc; no rows without joints); ``parent`` and
+    ``min_t`` are scratch arrays of at least n entries; ``label`` a 1-element counter for
+    fresh island labels.
     """
     c = ctx[0]
     n = c.n
@@ -152,6 +185,8 @@ def update_islands(ctx, B, C, S, parent, min_t, label):
         b = S.b[k]
         if b >= 0 and B.kind[a] == DYNAMIC and B.kind[b] == DYNAMIC:
             _union(parent, a, b)
+    if JL.shape[0]:
+        _joint_links(B, n, JL, parent)
     for i in range(n):
         min_t[i] = np.inf
     for i in range(n):
@@ -188,11 +223,26 @@ class Islands:
         self.parent = np.zeros(64, dtype=np.int64)
         self.min_t = np.zeros(64)
         self.label = np.zeros(1, dtype=np.int64)
+        self._no_links = np.zeros((0, 3), dtype=np.int64)
 
     def update(self, ctx, store) -> int:
         n = store.bodies.n
         if n > len(self.parent):
             self.parent = np.zeros(2 * n, dtype=np.int64)
             self.min_t = np.zeros(2 * n)
-        return update_islands(ctx.array, store.bodies.view, store.contacts.cur, store.springs.view,
+        links = joint_links(store.joints) if store.joints.n else self._no_links
+        return update_islands(ctx.array, store.bodies.view, store.contacts.cur, store.springs.view, links,
                               self.parent, self.min_t, self.label)
+
+
+def joint_links(joints) -> np.ndarray:
+    """(a, b, driving) per unbroken joint: the rows ``update_islands`` reads."""
+    n = joints.n
+    J = joints.view
+    keep = (J.flags[:n] & BROKEN) == 0
+    driving = (J.max_motor[:n] > 0.0) & (J.motor_speed[:n] != 0.0) & (J.kind[:n] != MOUSE)
+    out = np.empty((int(keep.sum()), 3), dtype=np.int64)
+    out[:, 0] = J.a[:n][keep]
+    out[:, 1] = J.b[:n][keep]
+    out[:, 2] = driving[keep]
+    return out

@@ -20,6 +20,8 @@ import numpy as np
 
 from .. import options
 from ..collision import broadphase, narrowphase
+from ..collision.broadphase.exclude import drop_excluded
+from ..constraints.joints.work import joint_work
 from ..errors import SimulationError
 from ..geometry.transform import update_geometry
 from ..store import DYNAMIC, KIND_NAMES, STATIC
@@ -55,6 +57,7 @@ class Pipeline:
         ctx.set("step", world.steps)
         ctx.set("n", store.bodies.n)
         ctx.set("ns", store.springs.n)
+        ctx.set("nj", store.joints.n)
         ctx.set("nc", store.contacts.n)
         if dt != self._dt:
             ctx.set("dt", dt)
@@ -96,6 +99,11 @@ class Pipeline:
             self.refresh_geometry(world, dt)
         self.npairs, self._pairs = broadphase.find_pairs(B, s.bodies.n, world.broadphase, self._pairs,
                                                          world.max_pairs)
+        if s.joints.n:  # joined bodies do not collide (unless the joint says so)
+            work = joint_work(s)
+            work.update(s)
+            if len(work.exclude):
+                self.npairs = int(drop_excluded(self._pairs, self.npairs, work.exclude))
         self.profile.stamp("broadphase")
         narrowphase.collide(self.ctx, B, s.verts.view, self._pairs, self.npairs, s.contacts)
         self.ctx.set("nc", s.contacts.n)
@@ -219,7 +227,7 @@ class Pipeline:
                 stages.append("islands/sleep")
             stages.append("finite_check")
         return {
-            "bodies": n, **kinds, "awake": awake, "springs": store.springs.n,
+            "bodies": n, **kinds, "awake": awake, "springs": store.springs.n, "joints": store.joints.n,
             "contacts": store.contacts.n, "solver": world.solver, "integrator": world.integrator,
             "settings": dict(values), "sleeping": world.sleeping,
             "stages": stages,

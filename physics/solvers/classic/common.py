@@ -17,9 +17,11 @@ import numpy as np
 from ...constraints.springs.force import spring_rate
 from ...errors import SimulationError
 from ...options import INTEGRATORS
+from ...constraints.joints.work import after_step, joint_args
 from ...settings import Setting
 from ..base import SolverMode
 from .contact_geometry import classic_points
+from ..joint_settings import joint_position_setting, joint_solver_setting
 from .integrators import LIMITS, allocate_work, substeps_for
 
 NO_PENALTY = np.zeros(5)
@@ -44,6 +46,9 @@ def auto_speed(value: float, gx: float, gy: float, dt: float) -> float:
 
 
 COMMON = (
+    joint_solver_setting(),
+    Setting("joint_iterations", 4, 1, 256, "velocity passes over the joints per sub-step"),
+    joint_position_setting(),
     Setting("max_substeps", 32, 1, 1024,
             "cap on automatic sub-steps (stiff springs / contacts); a step that would need more "
             "raises SimulationError instead of blowing up"),
@@ -122,6 +127,22 @@ class SeedMode(SolverMode):
                 f"than max_substeps={limit}; raise max_substeps, lower the stiffness or dt",
                 stage="solve")
         return need
+
+    def joints(self, ctx, par, store):
+        """(J, JW, JS) for the kernel: impulses per sub-step (Nones without joints)."""
+        span = float(ctx.get("dt")) / int(par.get("substeps"))
+        return joint_args(store, span, int(ctx.get("step")))
+
+    @staticmethod
+    def joints_done(store, J, broken: int) -> None:
+        if J is not None:
+            after_step(store, broken)
+
+    @staticmethod
+    def joint_stages(store, values) -> list[str]:
+        if not store.joints.n:
+            return []
+        return [f"joints:sequential_impulse per sub-step ({values['joint_solver']}, ngs)"]
 
     @staticmethod
     def integrator_name(ctx) -> str:

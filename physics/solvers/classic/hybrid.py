@@ -41,4 +41,4 @@ class HybridMode(ImpulseMode):
                                                            "contacts:impulse (impacts)"]
         if values["projection"] != "none":
             out.append(f"projection:{values['projection']} (impacts)")
-        return out
+        return out + self.joint_stages(store, values)

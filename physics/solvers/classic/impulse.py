@@ -17,6 +17,7 @@ from __future__ import annotations
 from ..._jit import kernel
 from ...constraints.point import prepare_points
 from ...settings import Setting, declare
+from .classic_joints import begin_classic_joints, end_classic_joints
 from .common import COMMON, IMPULSE_SETTINGS, NO_PENALTY, PROJECTIONS, SeedMode, auto_speed, share_factor
 from .contact_geometry import classify
 from .impulses import activate_impulses, position_share, save_velocities, solve_impulses
@@ -27,7 +28,7 @@ ACTIVE_DEPTH = 1e-9  # a point takes part once it penetrates (seed: collision = 
 
 
 @kernel
-def impulse_step(ctx, par, B, C, S, P, R, hybrid):
+def impulse_step(ctx, par, B, C, S, P, R, hybrid, J, JW, JS):
     """Move (forces, integrator), then resolve: impulses, position share, projection.
 
     With ``hybrid`` only the points ``classify`` found approaching faster than
@@ -38,9 +39,11 @@ def impulse_step(ctx, par, B, C, S, P, R, hybrid):
     nc = c.nc
     save_start(B, n, R)
     prepare_points(B, C, nc, p.stick_speed, P)
+    if J is not None:
+        begin_classic_joints(c, p, B, J, JW)
     if hybrid:
         classify(B, C, nc, P, p.thr)
-    advance(c, p, B, S, C, P, R)
+    advance(c, p, B, S, C, P, R, J, JW, JS)
     save_velocities(B, n, R)
     activate_impulses(B, C, nc, P, R, ACTIVE_DEPTH, hybrid, p.thr, c.gx, c.gy, p.energy_correction,
                       p.stick_speed)
@@ -49,6 +52,7 @@ def impulse_step(ctx, par, B, C, S, P, R, hybrid):
     if p.proj > 0:
         project(B, C, nc, P, R, p.allowed_penetration, p.proj == 2, p.min_linear_share,
                 p.projection_iterations)
+    return end_classic_joints(c, p, B, J, JW, JS)
 
 
 class ImpulseMode(SeedMode):
@@ -80,8 +84,10 @@ class ImpulseMode(SeedMode):
 
     def step(self, ctx, par, store):
         R, P = self.work(store.bodies.n, store.contacts.n)
-        impulse_step(ctx.array, par.array, store.bodies.view, store.contacts.cur, store.springs.view, P, R,
-                     self.hybrid)
+        J, JW, JS = self.joints(ctx, par, store)
+        broken = impulse_step(ctx.array, par.array, store.bodies.view, store.contacts.cur, store.springs.view,
+                              P, R, self.hybrid, J, JW, JS)
+        self.joints_done(store, J, broken)
 
     hybrid = False
 
@@ -89,4 +95,4 @@ class ImpulseMode(SeedMode):
         out = self.force_stages(store, integrator) + ["contacts:impulse"]
         if values["projection"] != "none":
             out.append(f"projection:{values['projection']}")
-        return out
+        return out + self.joint_stages(store, values)

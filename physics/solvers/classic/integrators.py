@@ -23,6 +23,7 @@ from collections import namedtuple
 import numpy as np
 
 from ..._jit import kernel
+from ...constraints.joints.table_passes import classic_joint_substep
 from ...options import INTEGRATORS
 from ...store import DYNAMIC, KINEMATIC
 from .forces import eval_forces
@@ -144,8 +145,9 @@ def rk4(c, p, B, S, C, P, R, h):
 
 
 @kernel
-def advance(c, p, B, S, C, P, R):
-    """``p.substeps`` steps of the integrator ``c.integrator``; penalty stick springs updated after each."""
+def advance(c, p, B, S, C, P, R, J, JW, JS):
+    """``p.substeps`` steps of the integrator ``c.integrator``; penalty stick springs updated after each,
+    and the joints' velocity passes (``J`` None: a world without joints, compiled without them)."""
     substeps = p.substeps
     method = c.integrator
     pen = p.pen
@@ -159,6 +161,8 @@ def advance(c, p, B, S, C, P, R):
             rk4(c, p, B, S, C, P, R, h)
         if pen[0] > 0.0 and c.nc > 0:
             update_stick(B, C, c.nc, P, R, h, pen)
+        if J is not None:
+            classic_joint_substep(c, B, J, JW, JS, h, p.joint_iterations, p.joint_solver == 0)
 
 
 def substeps_for(rate: float, dt: float, method: str) -> int:

@@ -14,18 +14,22 @@ from ..._jit import kernel
 from ...constraints.point import prepare_points
 from ...settings import declare
 from .common import COMMON, PENALTY_SETTINGS, SeedMode, contact_rate, penalty_params
+from .classic_joints import begin_classic_joints, end_classic_joints
 from .contact_geometry import PENALTY, flag_all
 from .integrators import advance, save_start
 
 
 @kernel
-def penalty_step(ctx, par, B, C, S, P, R):
+def penalty_step(ctx, par, B, C, S, P, R, J, JW, JS):
     c = ctx[0]
     p = par[0]
     save_start(B, c.n, R)
     prepare_points(B, C, c.nc, p.stick_speed, P)
+    if J is not None:
+        begin_classic_joints(c, p, B, J, JW)
     flag_all(C, c.nc, P, PENALTY)
-    advance(c, p, B, S, C, P, R)
+    advance(c, p, B, S, C, P, R, J, JW, JS)
+    return end_classic_joints(c, p, B, J, JW, JS)
 
 
 class PenaltyMode(SeedMode):
@@ -41,8 +45,12 @@ class PenaltyMode(SeedMode):
 
     def step(self, ctx, par, store):
         R, P = self.work(store.bodies.n, store.contacts.n)
-        penalty_step(ctx.array, par.array, store.bodies.view, store.contacts.cur, store.springs.view, P, R)
+        J, JW, JS = self.joints(ctx, par, store)
+        broken = penalty_step(ctx.array, par.array, store.bodies.view, store.contacts.cur, store.springs.view,
+                              P, R, J, JW, JS)
+        self.joints_done(store, J, broken)
 
     def stages(self, store, values, integrator):
         return self.force_stages(store, integrator)[:-1] + ["forces:penalty_contacts",
-                                                           f"integrate:{integrator} (sub-stepped)"]
+                                                           f"integrate:{integrator} (sub-stepped)"] + \
+            self.joint_stages(store, values)

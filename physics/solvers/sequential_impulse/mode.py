@@ -5,10 +5,14 @@ from collections import namedtuple
 
 import numpy as np
 
+from ...constraints.joints.work import after_step, joint_args
 from ...constraints.point import point_rows, point_type
 from ...settings import Setting, declare
 from ..base import SolverMode
-from .kernel import BAUMGARTE, SPLIT, si_step
+from ..joint_settings import GLOBAL as _GLOBAL, joint_position_setting, joint_solver_setting
+from .kernel import BAUMGARTE, GLOBAL, SPLIT, si_step
+
+assert GLOBAL == _GLOBAL
 
 CORRECTIONS = ("baumgarte", "split_impulse")
 assert CORRECTIONS.index("baumgarte") == BAUMGARTE and CORRECTIONS.index("split_impulse") == SPLIT
@@ -37,6 +41,8 @@ class SequentialImpulse(SolverMode):
         Setting("restitution_threshold", 1.0, 0.0, 100.0, "impacts slower than this (m/s) do not bounce"),
         Setting("stick_speed", 0.01, 0.0, 10.0, "tangential speed (m/s) below which static friction applies"),
         Setting("block_solver", False, doc="solve the two normal points of a face contact together (Box2D 2.x block solver; off: it converges faster per face but stacks drift more here)"),
+        joint_solver_setting(),
+        joint_position_setting(),
     )
     derived = (("inv_dt", np.float64),)
 
@@ -61,12 +67,19 @@ class SequentialImpulse(SolverMode):
         c = store.contacts
         if c.n > len(self.W.bias):
             self._alloc_rows(2 * c.n)
-        c.adopt(ctx.get("dt"), int(ctx.get("step")))
-        si_step(ctx.array, par.array, store.bodies.view, c.cur, store.springs.view, self.W, self.M)
+        step = int(ctx.get("step"))
+        c.adopt(ctx.get("dt"), step)
+        J, JW, JS = joint_args(store, ctx.get("dt"), step)
+        broken = si_step(ctx.array, par.array, store.bodies.view, c.cur, store.springs.view, self.W, self.M,
+                         J, JW, JS)
+        if J is not None:
+            after_step(store, broken)
 
     def stages(self, store, values, integrator):
         out = ["integrate:symplectic_euler", "contacts:sequential_impulse",
                f"position_correction:{values['position_correction']}"]
         if store.springs.n:
             out.append("springs")
+        if store.joints.n:
+            out.append(f"joints:sequential_impulse ({values['joint_solver']}, ngs)")
         return out

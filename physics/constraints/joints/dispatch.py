@@ -1,0 +1,137 @@
+"""The joint verbs for all joints at once: a solver mode calls one function per verb.
+
+- ``warm_start_joints``: every row's accumulated impulse applied again;
+- ``solve_joints(use_bias)``: the spring, motor and limit rows (and the motor and
+  mouse joints) in sequence, then the equality rows: each joint's block in
+  sequence (Box2D v3) or, with ``eq_global``, all of them together
+  (system/solve.py) except those of structures the system left sequential;
+  without bias it is the relax pass;
+- ``store_joints``: reaction force and torque of the last pass into the table,
+  and breaking (returns how many joints broke).
+Rows are written by the kind's ``rows_*`` at the bodies' current positions.
+"""
+from __future__ import annotations
+
+import math
+
+from .jit import row_inline, row_kernel
+from ...store.joints import BROKEN, DISTANCE, MOTOR, MOUSE, PRISMATIC, REVOLUTE, ROWS, WELD, WHEEL
+from .distance import rows_distance
+from .frame import arms, cross
+from .layout import KA, NX, NY
+from .motor import rows_motor, solve_motor_joint
+from .mouse import rows_mouse, solve_mouse
+from .prismatic import rows_prismatic
+from .revolute import rows_revolute
+from .rows import solve_equality, solve_free_rows, warm_start_rows
+from .system.solve import solve_system
+from .weld import rows_weld
+from .wheel import rows_wheel
+
+
+@row_inline
+def joint_rows(B, J, JW, j, a, b):
+    """Row geometry of joint j now (its kind's ``rows_*``)."""
+    k = J.kind[j]
+    if k == REVOLUTE:
+        rows_revolute(B, J, JW, j, a, b)
+    elif k == PRISMATIC:
+        rows_prismatic(B, J, JW, j, a, b)
+    elif k == WELD:
+        rows_weld(B, J, JW, j, a, b)
+    elif k == DISTANCE:
+        rows_distance(B, J, JW, j, a, b)
+    elif k == WHEEL:
+        rows_wheel(B, J, JW, j, a, b)
+    elif k == MOTOR:
+        rows_motor(B, J, JW, j, a, b)
+    else:
+        rows_mouse(B, J, JW, j, a, b)
+
+
+@row_kernel
+def warm_start_joints(c, B, J, JW):
+    for j in range(c.nj):
+        if JW.on[j]:
+            a = JW.ab[j, 0]
+            b = JW.ab[j, 1]
+            joint_rows(B, J, JW, j, a, b)
+            warm_start_rows(J, JW, j, a, b)
+
+
+@row_kernel
+def refresh_rows(c, B, J, JW):
+    """Every joint's rows at the bodies' current positions (before a position pass)."""
+    for j in range(c.nj):
+        if JW.on[j]:
+            joint_rows(B, J, JW, j, JW.ab[j, 0], JW.ab[j, 1])
+
+
+@row_inline
+def equality_rows_of(mask):
+    return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1)
+
+
+@row_kernel
+def solve_joints(c, B, J, JW, JS, use_bias, inv_h, eq_global):
+    """One pass over every joint (see the module doc)."""
+    for j in range(c.nj):
+        if not JW.on[j]:
+            continue
+        a = JW.ab[j, 0]
+        b = JW.ab[j, 1]
+        joint_rows(B, J, JW, j, a, b)
+        kind = J.kind[j]
+        if kind == MOTOR:
+            solve_motor_joint(J, JW, j, a, b, inv_h)
+            continue
+        if kind == MOUSE:
+            solve_mouse(J, JW, j, a, b)
+            continue
+        mask = JW.mask[j]
+        solve_free_rows(J, JW, j, a, b, mask, use_bias, inv_h)
+        m = equality_rows_of(mask)
+        if m > 0 and (not eq_global or JW.seq[j]):
+            solve_equality(J, JW, j, a, b, m, use_bias)
+    if eq_global and JS.dims[0] > 0:
+        solve_system(J, JW, JS, use_bias)
+
+
+@row_kernel
+def store_joints(c, J, JW, inv_span):
+    """Reaction force on a and torque about a's anchor (from every row's impulse) per second of
+    the last pass, and breaking; returns the number of joints that broke in this step."""
+    broken = 0
+    G = JW.G
+    for j in range(c.nj):
+        if not JW.on[j]:
+            continue
+        a = JW.ab[j, 0]
+        b = JW.ab[j, 1]
+        rax, ray, _, _, _, _ = arms(JW, j, a, b)
+        fx = 0.0
+        fy = 0.0
+        tq = 0.0
+        for r in range(ROWS):
+            lam = J.impulse[j, r]
+            if lam != 0.0:
+                nx = G[j, r, NX]
+                ny = G[j, r, NY]
+                fx += lam * nx
+                fy += lam * ny
+                tq += lam * (G[j, r, KA] - cross(rax, ray, nx, ny))
+        fx *= inv_span
+        fy *= inv_span
+        tq *= inv_span
+        J.force[j, 0] = fx
+        J.force[j, 1] = fy
+        J.torque[j] = tq
+        bf = J.break_force[j]
+        bt = J.break_torque[j]
+        if (not math.isnan(bf) and math.hypot(fx, fy) >= bf) or (not math.isnan(bt) and abs(tq) >= bt):
+            J.flags[j] |= BROKEN
+            JW.on[j] = 0
+            for r in range(ROWS):
+                J.impulse[j, r] = 0.0
+            broken += 1
+    return broken

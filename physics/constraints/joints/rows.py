@@ -1,0 +1,195 @@
+"""The algebra of joint rows on the body rows: every kind's rows go through here.
+
+A row is C' = n . (v_a - v_b) + ka w_a - kb w_b (layout.py); an impulse lam
+along it changes v_a by +m_a^-1 lam n, w_a by +I_a^-1 lam ka and b's by the
+opposite, so C' changes by K lam with K = (m_a^-1 + m_b^-1)|n|^2 + I_a^-1 ka^2
++ I_b^-1 kb^2.  The solves are those of Box2D v3's joints (revolute_joint.c et
+al.) in this one form:
+
+- spring (soft in every pass): lam = -ms m (C' + rate C) - is acc;
+- motor: lam = -m (C' - speed), accumulated impulse clamped to +-max;
+- limit (C >= 0 when satisfied): speculative while C > 0 (bias C / h: may close
+  the gap within the pass, no further), soft when violated in the biased pass,
+  rigid without bias; accumulated impulse >= 0;
+- the equality rows of one joint as one block (1 to 3 rows): b = K^-1 (C' + bias),
+  lam_r = -ms_r b_r - is_r acc_r (Box2D's point block with per-row softness).
+"""
+from __future__ import annotations
+
+from .jit import row_inline
+from ...store.joints import LOWER, MOTOR_ROW, SPRING
+from ..body_rows import II, IM, VX, VY, W
+from .layout import CC, KA, KB, MASS, MAX_MOTOR, NX, NY, SOFT_EQ, SOFT_LIMIT, SOFT_SPRING
+
+SINGULAR = 1e-12  # relative determinant below which a block is solved row by row
+
+
+@row_inline
+def set_row(JW, j, r, nx, ny, ka, kb, c, ims, iia, iib):
+    """Write row r of joint j (ims = m_a^-1 + m_b^-1) with its effective mass."""
+    JW.G[j, r, NX] = nx
+    JW.G[j, r, NY] = ny
+    JW.G[j, r, KA] = ka
+    JW.G[j, r, KB] = kb
+    JW.G[j, r, CC] = c
+    k = ims * (nx * nx + ny * ny) + iia * ka * ka + iib * kb * kb
+    JW.G[j, r, MASS] = 1.0 / k if k > 0.0 else 0.0
+
+
+@row_inline
+def clear_row(JW, j, r):
+    for f in range(JW.G.shape[2]):
+        JW.G[j, r, f] = 0.0
+
+
+@row_inline
+def row_speed(JW, a, b, j, r):
+    """C' of row r now."""
+    return (JW.G[j, r, NX] * (JW.SB[a, VX] - JW.SB[b, VX]) + JW.G[j, r, NY] * (JW.SB[a, VY] - JW.SB[b, VY])
+            + JW.G[j, r, KA] * JW.SB[a, W] - JW.G[j, r, KB] * JW.SB[b, W])
+
+
+@row_inline
+def apply_row(JW, a, b, j, r, lam):
+    """Impulse lam along row r: +on a, -on b."""
+    px = lam * JW.G[j, r, NX]
+    py = lam * JW.G[j, r, NY]
+    JW.SB[a, VX] += JW.SB[a, IM] * px
+    JW.SB[a, VY] += JW.SB[a, IM] * py
+    JW.SB[a, W] += JW.SB[a, II] * lam * JW.G[j, r, KA]
+    JW.SB[b, VX] -= JW.SB[b, IM] * px
+    JW.SB[b, VY] -= JW.SB[b, IM] * py
+    JW.SB[b, W] -= JW.SB[b, II] * lam * JW.G[j, r, KB]
+
+
+@row_inline
+def warm_start_rows(J, JW, j, a, b):
+    """Apply every row's accumulated impulse (rows a joint does not use hold 0)."""
+    for r in range(J.impulse.shape[1]):
+        lam = J.impulse[j, r]
+        if lam != 0.0:
+            apply_row(JW, a, b, j, r, lam)
+
+
+@row_inline
+def solve_spring(J, JW, j, a, b):
+    r = SPRING
+    acc = J.impulse[j, r]
+    vn = row_speed(JW, a, b, j, r)
+    lam = (-JW.F[j, SOFT_SPRING + 1] * JW.G[j, r, MASS] * (vn + JW.F[j, SOFT_SPRING] * JW.G[j, r, CC])
+           - JW.F[j, SOFT_SPRING + 2] * acc)
+    J.impulse[j, r] = acc + lam
+    apply_row(JW, a, b, j, r, lam)
+
+
+@row_inline
+def solve_motor(J, JW, j, a, b):
+    r = MOTOR_ROW
+    acc = J.impulse[j, r]
+    vn = row_speed(JW, a, b, j, r) - J.motor_speed[j]
+    top = JW.F[j, MAX_MOTOR]
+    new = min(max(acc - JW.G[j, r, MASS] * vn, -top), top)
+    J.impulse[j, r] = new
+    apply_row(JW, a, b, j, r, new - acc)
+
+
+@row_inline
+def solve_limit(J, JW, j, r, a, b, use_bias, inv_h):
+    c = JW.G[j, r, CC]
+    bias = 0.0
+    ms = 1.0
+    isc = 0.0
+    if c > 0.0:
+        bias = c * inv_h  # speculative: may reach the limit in this pass, no further
+    elif use_bias:
+        bias = JW.F[j, SOFT_LIMIT] * c
+        ms = JW.F[j, SOFT_LIMIT + 1]
+        isc = JW.F[j, SOFT_LIMIT + 2]
+    acc = J.impulse[j, r]
+    vn = row_speed(JW, a, b, j, r)
+    new = max(acc - ms * JW.G[j, r, MASS] * (vn + bias) - isc * acc, 0.0)
+    J.impulse[j, r] = new
+    apply_row(JW, a, b, j, r, new - acc)
+
+
+@row_inline
+def solve_free_rows(J, JW, j, a, b, mask, use_bias, inv_h):
+    """Spring, motor, then the limits (Box2D v3's order), where the joint has them."""
+    if mask & (1 << SPRING):
+        solve_spring(J, JW, j, a, b)
+    if mask & (1 << MOTOR_ROW):
+        solve_motor(J, JW, j, a, b)
+    if mask & (1 << LOWER):
+        solve_limit(J, JW, j, LOWER, a, b, use_bias, inv_h)
+    if mask & (1 << (LOWER + 1)):
+        solve_limit(J, JW, j, LOWER + 1, a, b, use_bias, inv_h)
+
+
+@row_inline
+def block_entry(JW, a, b, j, r, s):
+    """K_rs = (m_a^-1 + m_b^-1) n_r . n_s + I_a^-1 ka_r ka_s + I_b^-1 kb_r kb_s."""
+    return ((JW.SB[a, IM] + JW.SB[b, IM]) * (JW.G[j, r, NX] * JW.G[j, s, NX] + JW.G[j, r, NY] * JW.G[j, s, NY])
+            + JW.SB[a, II] * JW.G[j, r, KA] * JW.G[j, s, KA] + JW.SB[b, II] * JW.G[j, r, KB] * JW.G[j, s, KB])
+
+
+@row_inline
+def solve_sym(m, k00, k01, k02, k11, k12, k22, g0, g1, g2):
+    """(solved, x) of K x = g for the leading m x m part of a symmetric K (m = 1, 2, 3)."""
+    if m == 1:
+        if k00 <= 0.0:
+            return False, 0.0, 0.0, 0.0
+        return True, g0 / k00, 0.0, 0.0
+    if m == 2:
+        det = k00 * k11 - k01 * k01
+        if det <= SINGULAR * k00 * k11 or det <= 0.0:
+            return False, 0.0, 0.0, 0.0
+        inv = 1.0 / det
+        return True, (k11 * g0 - k01 * g1) * inv, (k00 * g1 - k01 * g0) * inv, 0.0
+    c00 = k11 * k22 - k12 * k12
+    c01 = k02 * k12 - k01 * k22
+    c02 = k01 * k12 - k02 * k11
+    det = k00 * c00 + k01 * c01 + k02 * c02
+    if det <= SINGULAR * k00 * k11 * k22 or det <= 0.0:
+        return False, 0.0, 0.0, 0.0
+    inv = 1.0 / det
+    c11 = k00 * k22 - k02 * k02
+    c12 = k01 * k02 - k00 * k12
+    c22 = k00 * k11 - k01 * k01
+    return (True, (c00 * g0 + c01 * g1 + c02 * g2) * inv, (c01 * g0 + c11 * g1 + c12 * g2) * inv,
+            (c02 * g0 + c12 * g1 + c22 * g2) * inv)
+
+
+@row_inline
+def solve_equality(J, JW, j, a, b, m, use_bias):
+    """The joint's m equality rows as one block, soft as the pass asks (see the module doc)."""
+    o = 0 if use_bias else 3
+    g0 = row_speed(JW, a, b, j, 0) + JW.F[j, SOFT_EQ + o] * JW.G[j, 0, CC]
+    g1 = 0.0
+    g2 = 0.0
+    k01 = 0.0
+    k02 = 0.0
+    k11 = 0.0
+    k12 = 0.0
+    k22 = 0.0
+    k00 = block_entry(JW, a, b, j, 0, 0)
+    if m > 1:
+        g1 = row_speed(JW, a, b, j, 1) + JW.F[j, SOFT_EQ + 6 + o] * JW.G[j, 1, CC]
+        k01 = block_entry(JW, a, b, j, 0, 1)
+        k11 = block_entry(JW, a, b, j, 1, 1)
+    if m > 2:
+        g2 = row_speed(JW, a, b, j, 2) + JW.F[j, SOFT_EQ + 12 + o] * JW.G[j, 2, CC]
+        k02 = block_entry(JW, a, b, j, 0, 2)
+        k12 = block_entry(JW, a, b, j, 1, 2)
+        k22 = block_entry(JW, a, b, j, 2, 2)
+    ok, x0, x1, x2 = solve_sym(m, k00, k01, k02, k11, k12, k22, g0, g1, g2)
+    if not ok:  # a degenerate block (e.g. nothing can rotate): each row on its own
+        x0 = g0 * JW.G[j, 0, MASS]
+        x1 = g1 * JW.G[j, 1, MASS]
+        x2 = g2 * JW.G[j, 2, MASS]
+    for r in range(m):
+        x = x0 if r == 0 else (x1 if r == 1 else x2)
+        s = SOFT_EQ + 6 * r + o
+        acc = J.impulse[j, r]
+        lam = -JW.F[j, s + 1] * x - JW.F[j, s + 2] * acc
+        J.impulse[j, r] = acc + lam
+        apply_row(JW, a, b, j, r, lam)

@@ -1,0 +1,128 @@
+"""The global passes: assemble (J M^-1 J^T + Gamma) from the joints' rows, factor, solve, apply.
+
+Entry e of the matrix is the sum of its contributions (topology.py): for joint
+rows (j, r) and (k, s) sharing a moving body c,
+    s_j s_k (m_c^-1 n_jr . n_ks + I_c^-1 k_jr k_ks),
+with s = +1 on a joint's body a and -1 on b and k its ka or kb.  Rigid rows solve
+    K dlam = -(C' + bias C)     (bias: the mode's joint bias rate, none when relaxing),
+and rows that are springs on purpose add their compliance gamma = K_rr is / ms
+(constraints/softness.py; the same fixed point as Box2D's soft row):
+    (K + gamma) dlam = -(C' + rate C + gamma lam).
+The position pass solves K dlam = -beta C on the positions (a Newton step on the
+joint equations when beta = 1) and leaves springs alone.  Rows of joints that
+are off this step (asleep, broken) are decoupled (identity rows).
+"""
+from __future__ import annotations
+
+from ..jit import row_kernel
+from ..layout import CC, KA, KB, NX, NY, SOFT_EQ
+from ..rows import apply_row, row_speed
+from ..shift import capped_error, shift_row
+from ...body_rows import II, IM
+from . import ldl
+
+
+@row_kernel
+def mark_skips(JW, JS, positions):
+    """Which rows sit out this pass; True if any row takes part."""
+    active = False
+    for i in range(JS.dims[0]):
+        j = JS.row_j[i]
+        skip = JW.on[j] == 0
+        if not skip and positions and JW.F[j, SOFT_EQ + 6 * JS.row_r[i] + 5] > 0.0:
+            skip = True  # a spring row is not projected onto its rest position
+        JS.skip[i] = skip
+        active |= not skip
+    return active
+
+
+@row_kernel
+def assemble(JW, JS):
+    """Ax from the rows' Jacobians; skipped rows become identity rows."""
+    G = JW.G
+    SB = JW.SB
+    Ax = JS.Ax
+    for e in range(JS.dims[2]):
+        Ax[e] = 0.0
+    Q = JS.contrib
+    for q in range(JS.dims[1]):
+        j = Q[q, 2]
+        r = Q[q, 3]
+        k = Q[q, 5]
+        s = Q[q, 6]
+        if JS.skip[JS.jrow[j] + r] or JS.skip[JS.jrow[k] + s]:
+            continue
+        c = Q[q, 1]
+        sj = Q[q, 4]
+        sk = Q[q, 7]
+        kj = G[j, r, KA] if sj > 0 else G[j, r, KB]
+        kk = G[k, s, KA] if sk > 0 else G[k, s, KB]
+        Ax[Q[q, 0]] += sj * sk * (SB[c, IM] * (G[j, r, NX] * G[k, s, NX] + G[j, r, NY] * G[k, s, NY])
+                                  + SB[c, II] * kj * kk)
+    for i in range(JS.dims[0]):
+        if JS.skip[i]:
+            Ax[JS.Ap[i + 1] - 1] = 1.0  # the diagonal is the last entry of its column
+
+
+@row_kernel
+def factor_and_solve(JS):
+    nr = JS.dims[0]
+    ldl.numeric(nr, JS.Ap, JS.Ai, JS.Ax, JS.Lp, JS.Parent, JS.Lnz, JS.Li, JS.Lx, JS.invD, JS.Y, JS.Pattern,
+                JS.Flag)
+    ldl.solve(nr, JS.Lp, JS.Lnz, JS.Li, JS.Lx, JS.invD, JS.x)
+
+
+@row_kernel
+def solve_system(J, JW, JS, use_bias):
+    """One velocity pass over all global equality rows (biased, or relax)."""
+    if not mark_skips(JW, JS, False):
+        return
+    assemble(JW, JS)
+    G = JW.G
+    F = JW.F
+    for i in range(JS.dims[0]):
+        if JS.skip[i]:
+            JS.x[i] = 0.0
+            continue
+        j = JS.row_j[i]
+        r = JS.row_r[i]
+        o = SOFT_EQ + 6 * r
+        g = row_speed(JW, JW.ab[j, 0], JW.ab[j, 1], j, r)
+        if F[j, o + 5] > 0.0:
+            d = JS.Ap[i + 1] - 1
+            gam = JS.Ax[d] * F[j, o + 5] / F[j, o + 4]
+            JS.Ax[d] += gam
+            JS.x[i] = -(g + F[j, o + 3] * G[j, r, CC] + gam * J.impulse[j, r])
+        elif use_bias:
+            JS.x[i] = -(g + F[j, o] * G[j, r, CC])
+        else:
+            JS.x[i] = -g
+    factor_and_solve(JS)
+    for i in range(JS.dims[0]):
+        if not JS.skip[i]:
+            j = JS.row_j[i]
+            r = JS.row_r[i]
+            lam = JS.x[i]
+            J.impulse[j, r] += lam
+            apply_row(JW, JW.ab[j, 0], JW.ab[j, 1], j, r, lam)
+
+
+@row_kernel
+def correct_system(B, JW, JS, beta):
+    """One position pass: K dlam = -beta C (errors capped per row), applied to the positions."""
+    if not mark_skips(JW, JS, True):
+        return
+    assemble(JW, JS)
+    G = JW.G
+    for i in range(JS.dims[0]):
+        if JS.skip[i]:
+            JS.x[i] = 0.0
+        else:
+            j = JS.row_j[i]
+            r = JS.row_r[i]
+            JS.x[i] = -beta * capped_error(JW, j, r, G[j, r, CC])
+    factor_and_solve(JS)
+    for i in range(JS.dims[0]):
+        if not JS.skip[i]:
+            j = JS.row_j[i]
+            shift_row(B, JW, JW.ab[j, 0], JW.ab[j, 1], j, JS.row_r[i], JS.x[i])

@@ -1,0 +1,100 @@
+"""The solvers' joint scratch and its upkeep (Python; kernels receive the arrays).
+
+``JointScratch`` holds per joint the body rows it joins (``ab``: the world is row
+n), the prepared constants ``F`` and row geometry ``G`` (layout.py), whether it is
+on this step, its row mask and whether its equality rows stay sequential
+(``seq``); per body the step-start positions ``X0``/``Q0`` and the body rows
+``SB`` of modes that have none of their own.  ``JointWork.update`` grows the
+arrays and rebuilds the global system (system/topology.py) and the list of
+body pairs that must not collide only when the joint table's version or the
+kinds of the joined bodies changed.
+"""
+from __future__ import annotations
+
+from collections import namedtuple
+
+import numpy as np
+
+from ...store.joints import BROKEN, COLLIDE, ROWS
+from ..body_rows import NB
+from .layout import NF, NG
+from .system.topology import build, empty_system
+
+JointScratch = namedtuple("JointScratch", "ab F G on mask seq X0 Q0 SB")
+
+
+def _scratch(jcap, bcap):
+    return JointScratch(ab=np.zeros((jcap, 2), np.int64), F=np.zeros((jcap, NF)), G=np.zeros((jcap, ROWS, NG)),
+                        on=np.zeros(jcap, np.int8), mask=np.zeros(jcap, np.int64), seq=np.zeros(jcap, np.int8),
+                        X0=np.zeros((bcap, 2)), Q0=np.zeros(bcap), SB=np.zeros((bcap, NB)))
+
+
+class JointWork:
+    """Scratch arrays, the global system and the collision exclusions of one world's joints."""
+
+    def __init__(self):
+        self.W = _scratch(16, 64)
+        self.S = empty_system(16)
+        self.exclude = np.zeros(0, np.int64)
+        self._key = None
+
+    def update(self, store):
+        """(W, S) ready for a step of ``store``; rebuilt only where something changed."""
+        nj = store.joints.n
+        n = store.bodies.n
+        jcap, bcap = len(self.W.on), len(self.W.Q0)
+        if nj > jcap or n + 1 > bcap:
+            self.W = _scratch(max(nj, 2 * jcap) if nj > jcap else jcap,
+                              max(n + 1, 2 * bcap) if n + 1 > bcap else bcap)
+            self._key = None
+        J = store.joints.view
+        B = store.bodies.view
+        kinds = np.concatenate([B.kind[J.a[:nj]], np.where(J.b[:nj] >= 0, B.kind[np.maximum(J.b[:nj], 0)], -1)])
+        key = (store.joints.version, nj, kinds.tobytes())
+        if key != self._key:
+            self._rebuild(store, nj)
+            self._key = key
+        return self.W, self.S
+
+    def _rebuild(self, store, nj):
+        J = store.joints.view
+        B = store.bodies.view
+        self.S, seq = build(J, nj, B.kind[: store.bodies.n], len(self.W.on))
+        self.W.seq[:] = seq[: len(self.W.seq)]
+        keep = (J.b[:nj] >= 0) & ((J.flags[:nj] & (COLLIDE | BROKEN)) == 0)
+        a = J.a[:nj][keep].astype(np.int64)
+        b = J.b[:nj][keep].astype(np.int64)
+        self.exclude = np.unique((np.minimum(a, b) << 32) | np.maximum(a, b))
+
+    @property
+    def global_rows(self) -> int:
+        """Rows in the global system (0: every joint is solved by sequential rows)."""
+        return int(self.S.dims[0])
+
+
+def joint_work(store) -> JointWork:
+    """The store's joint scratch, created on first use."""
+    if store.joint_work is None:
+        store.joint_work = JointWork()
+    return store.joint_work
+
+
+def joint_args(store, span: float, step: int, rows=None):
+    """(J, W, S) for a mode's kernel, impulses made to mean ``span`` seconds; Nones without joints
+    (the kernels are then compiled without any joint code).  ``rows``: the mode's own body rows
+    (n + 1 of them), which the joints then share; otherwise W.SB."""
+    if store.joints.n == 0:
+        return None, None, None
+    W, S = joint_work(store).update(store)
+    store.joints.adopt(span, step)
+    if rows is not None:
+        W = W._replace(SB=rows)
+    return store.joints.view, W, S
+
+
+def after_step(store, broken: int) -> None:
+    """Record the joints that broke in the step (their rows are gone: the system is rebuilt)."""
+    if broken:
+        store.joints.note_broken()
+    elif store.joints.broken_last_step:
+        store.joints.broken_last_step = []
