@@ -13,6 +13,7 @@ import numpy as np
 
 from physics.store import CIRCLE
 from physics.views import RenderData
+from physics.views import _joint_rows as joint_rows  # plain numpy: no kernel
 
 
 def render_data(world) -> RenderData:
@@ -44,7 +45,8 @@ def render_data(world) -> RenderData:
         aabb[i, :2], aabb[i, 2:] = lo - half, hi + half
     ends = _spring_ends(B, st.springs.view, st.springs.n)
     return RenderData(verts, B.vstart[:n], B.vcount[:n], B.kind[:n], B.awake[:n], B.shape[:n], B.radius[:n],
-                      B.x[:n], B.q[:n], B.com[:n], B.id[:n], aabb, ends, np.zeros((0, 2)), np.zeros((0, 2)))
+                      B.x[:n], B.q[:n], B.com[:n], B.id[:n], aabb, ends, np.zeros((0, 2)), np.zeros((0, 2)),
+                      joint_rows(st))
 
 
 def _spring_ends(B, S, ns):
