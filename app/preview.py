@@ -13,7 +13,7 @@ import numpy as np
 
 from physics.store import CIRCLE
 from physics.views import RenderData
-from physics.views import _joint_rows as joint_rows  # plain numpy: no kernel
+from physics.views import joint_rows  # plain numpy: no kernel
 
 
 def render_data(world) -> RenderData:

@@ -102,10 +102,10 @@ def render_data(world) -> RenderData:
     nrm = np.repeat(c.cur.normal[: c.n], cnt, axis=0)
     return RenderData(V.world[: st.verts.top], B.vstart[:n], B.vcount[:n], B.kind[:n], B.awake[:n],
                       B.shape[:n], B.radius[:n], B.x[:n], B.q[:n], B.com[:n], B.id[:n], B.aabb[:n],
-                      ends, pts, nrm, _joint_rows(st))
+                      ends, pts, nrm, joint_rows(st))
 
 
-def _joint_rows(st) -> np.ndarray:
+def joint_rows(st) -> np.ndarray:
     """RenderData.joints (JOINT_DRAW_DTYPE) for the store's joints."""
     nj = st.joints.n
     out = np.zeros(nj, JOINT_DRAW_DTYPE)
