@@ -11,7 +11,9 @@ import numpy as np
 import physics
 import pyglet
 from OpenGL import GL
+from physics import joint_params as jp
 
+from .joint_specs import param_value
 from .scenes import scene_files, user_scenes_dir
 
 STATUS_EVERY = 2        # frames between status writes
@@ -37,6 +39,24 @@ def _bodies(app):
     return out
 
 
+def _joints(app):
+    """The user's joints (not the mouse drag's): ends, where they are drawn, parameters, readouts."""
+    out = []
+    for j in app.world.joints:
+        if app.editor.is_tool_joint(j):
+            continue
+        sp = app.camera.to_screen(j.anchor_a)
+        d = {"id": j.id, "kind": j.kind, "name": j.name, "a": j.body_a.id,
+             "b": None if j.body_b is None else j.body_b.id, "anchor_a": j.anchor_a, "anchor_b": j.anchor_b,
+             "screen": [float(sp[0]), float(app.height - sp[1])], "broken": j.broken,
+             "reaction_force": j.reaction_force,
+             "params": {n: param_value(j, n) for n in jp.PARAMS[j.kind]}}
+        if j.kind in ("revolute", "wheel", "prismatic", "distance"):
+            d["speed"] = j.speed
+        out.append(d)
+    return out
+
+
 def _offer(offer):
     return None if offer is None else {"path": str(offer[0]), "origin": offer[2]}
 
@@ -50,16 +70,19 @@ def status(app) -> dict:
         "t_gate": app.warmup.t_gate,
         "warm_errors": app.warmup.errors, "running": app.sim.running, "solver": w.solver,
         "n_bodies": len(w.bodies), "n_springs": len(w.springs),
+        "n_joints": len([j for j in w.joints if not ed.is_tool_joint(j)]), "n_tool_joints": len(ed.tool_joints),
         "bodies": _bodies(app) if small and app.warmup.ready else [],
         "path": str(ed.doc.path) if ed.doc.path else None, "dirty": ed.doc.dirty,
         "fault": app.sim.fault, "scene_errors": app.files.errors, "gl_errors": app.gl_errors[-20:],
         "messages": [m[0] for m in app.notices.items], "frame_times": app.times.avg, "fps": app.times.fps,
         "selection": [s.id for s in ed.selection if s.alive], "tool": ed.tool.name,
+        "selected_joints": [s.id for s in ed.selection if s.alive and isinstance(s, physics.Joint)],
         "camera": {"center": app.camera.center.tolist(), "scale": app.camera.scale},
         "time": w.time, "steps": w.steps, "window": [app.width, app.height],
         "ui_rects": app.ui_rects, "show_ui": app.show_ui,
         "springs": [{"id": s.id, "a": s.body_a.id, "b": None if s.body_b is None else s.body_b.id}
                     for s in w.springs if s.id not in ed.tool_springs] if small else [],
+        "joints": _joints(app) if small and app.warmup.ready else [],
         "overlays": dict(vars(app.overlays)), "quadtree_cells": len(app.sim.quadtree),
         "free_rect": list(app.free_rect()), "edit_error": ed.edit_error, "status_every": STATUS_EVERY,
         "save_as": app.files.save_as_path, "dialog": app.panels.dialogs.open_title,

@@ -1,19 +1,21 @@
-"""Copy and paste of bodies (and the springs among them): Ctrl+C keeps their specs, Ctrl+V adds
-a copy with the copied group's centre at the pointer (one undoable step)."""
+"""Copy and paste of bodies (and the springs and joints among them): Ctrl+C keeps their specs,
+Ctrl+V adds a copy with the copied group's centre at the pointer (one undoable step); Ctrl+D
+duplicates the same way, beside the originals."""
 from __future__ import annotations
 
 import numpy as np
 
 import physics
 
-from .commands import SPRING_FIELDS, AddBody, AddSpring, Command, body_spec
+from .commands import SPRING_FIELDS, AddBody, AddJoint, AddSpring, Command, body_spec
+from .joint_specs import joint_fields, moved_world_anchor
 
 NUDGE = np.array([0.6, -0.6])     # a paste where the originals are goes beside them, not on top
 
 
-def copy_bodies(world, bodies, tool_springs=()):
-    """The clipboard for ``bodies``: their specs, the springs between them or to the world
-    (not the mouse joint's), and their centre (mean position, m)."""
+def copy_bodies(world, bodies, tool_springs=(), tool_joints=()):
+    """The clipboard for ``bodies``: their specs, the springs and joints between them or to the
+    world (not the tools' own: the mouse joint), and their centre (mean position, m)."""
     index = {b.id: k for k, b in enumerate(bodies)}
     springs = []
     for sp in world.springs:
@@ -23,28 +25,37 @@ def copy_bodies(world, bodies, tool_springs=()):
             continue
         springs.append((index[sp.body_a.id], None if sp.body_b is None else index[sp.body_b.id],
                         {f: getattr(sp, f) for f in SPRING_FIELDS}))
+    joints = []
+    for j in world.joints:
+        if j.id in tool_joints or j.body_a.id not in index or (j.body_b is not None and j.body_b.id not in index):
+            continue
+        joints.append((j.kind, index[j.body_a.id], None if j.body_b is None else index[j.body_b.id],
+                       joint_fields(j)))
     centre = np.mean([b.position for b in bodies], axis=0)
-    return {"bodies": [body_spec(b) for b in bodies], "springs": springs, "centre": centre}
+    return {"bodies": [body_spec(b) for b in bodies], "springs": springs, "joints": joints, "centre": centre}
 
 
 class Paste(Command):
-    """Add the clipboard's bodies moved by ``offset`` (m) and their springs (world anchors moved
-    too); names are dropped (they must stay unique)."""
+    """Add the clipboard's bodies moved by ``offset`` (m) and their springs and joints (world
+    anchors moved too); names are dropped (they must stay unique)."""
 
-    def __init__(self, clip, offset):
+    def __init__(self, clip, offset, verb="paste"):
         off = np.asarray(offset, dtype=np.float64)
         self.adds = []
         for spec in clip["bodies"]:
             spec = dict(spec, name=None, position=tuple(np.asarray(spec["position"]) + off))
-            self.adds.append(AddBody(spec, "paste"))
+            self.adds.append(AddBody(spec, verb))
         self.spring_specs = []
         for ia, ib, fields in clip["springs"]:
             f = dict(fields, name=None)
             if ib is None:
                 f["anchor_b"] = tuple(np.asarray(f["anchor_b"]) + off)
             self.spring_specs.append((ia, ib, f))
+        self.joint_specs = [(kind, ia, ib, dict(moved_world_anchor(kind, f, off) if ib is None else f, name=None))
+                            for kind, ia, ib, f in clip.get("joints", ())]
         self.spring_cmds = None
-        self.label = f"paste {len(self.adds)} bod{'y' if len(self.adds) == 1 else 'ies'}"
+        self.joint_cmds = None
+        self.label = f"{verb} {len(self.adds)} bod{'y' if len(self.adds) == 1 else 'ies'}"
 
     def do(self, app):
         for c in self.adds:
@@ -54,8 +65,16 @@ class Paste(Command):
                                            **f}) for ia, ib, f in self.spring_specs]
         for c in self.spring_cmds:
             c.do(app)
+        if self.joint_cmds is None:
+            self.joint_cmds = [AddJoint({"kind": kind, "a": self.adds[ia].ref,
+                                         "b": None if ib is None else self.adds[ib].ref, "fields": f})
+                               for kind, ia, ib, f in self.joint_specs]
+        for c in self.joint_cmds:
+            c.do(app)
 
     def undo(self, app):
+        for c in reversed(self.joint_cmds or []):
+            c.undo(app)
         for c in reversed(self.spring_cmds or []):
             c.undo(app)
         for c in reversed(self.adds):

@@ -1,7 +1,7 @@
 """Undo/redo: every edit and creation in the sandbox is a command.
 
-Commands refer to bodies and springs through :class:`Ref` holders, so a body
-that is deleted and brought back by undo (as a new handle) is still the body
+Commands refer to bodies, springs and joints through :class:`Ref` holders, so a
+body that is deleted and brought back by undo (as a new handle) is still the body
 that later commands in the history talk about.
 """
 from __future__ import annotations
@@ -10,9 +10,11 @@ import time
 
 import physics
 
+from .joint_specs import joint_fields, make_joint, param_value
+
 
 class Ref:
-    """A stable reference to a body or spring across delete/undo cycles."""
+    """A stable reference to a body, spring or joint across delete/undo cycles."""
     __slots__ = ("obj",)
 
     def __init__(self, obj):
@@ -20,23 +22,28 @@ class Ref:
 
 
 class Refs:
-    """Handle id -> Ref, kept per world."""
+    """Handle id -> Ref, kept per world (bodies, springs and joints number their ids apart)."""
 
     def __init__(self):
         self._bodies: dict[int, Ref] = {}
         self._springs: dict[int, Ref] = {}
+        self._joints: dict[int, Ref] = {}
+
+    def _table(self, item):
+        if isinstance(item, physics.Spring):
+            return self._springs
+        return self._joints if isinstance(item, physics.Joint) else self._bodies
 
     def of(self, item) -> Ref:
-        table = self._springs if isinstance(item, physics.Spring) else self._bodies
+        table = self._table(item)
         r = table.get(item.id)
         if r is None:
             r = table[item.id] = Ref(item)
         return r
 
     def rebind(self, ref: Ref, item) -> None:
-        table = self._springs if isinstance(item, physics.Spring) else self._bodies
         ref.obj = item
-        table[item.id] = ref
+        self._table(item)[item.id] = ref
 
 
 BODY_FIELDS = ("kind", "position", "angle", "velocity", "angular_velocity", "density", "restitution",
@@ -55,6 +62,16 @@ def spring_spec(sp, refs: Refs) -> dict:
 
 def make_body(world, spec: dict):
     return world.add_body(spec["shape"], **{f: spec[f] for f in BODY_FIELDS})
+
+
+def joint_spec(j, refs: Refs) -> dict:
+    return {"kind": j.kind, "a": refs.of(j.body_a), "b": None if j.body_b is None else refs.of(j.body_b),
+            "fields": joint_fields(j)}
+
+
+def make_joint_from(world, spec: dict):
+    return make_joint(world, spec["kind"], spec["a"].obj, None if spec["b"] is None else spec["b"].obj,
+                      spec["fields"])
 
 
 def make_spring(world, spec: dict):
@@ -97,19 +114,24 @@ class AddBody(Command):
 
 
 class RemoveBodies(Command):
-    """Delete bodies and the springs attached to them."""
+    """Delete bodies and the springs and joints attached to them (not the tools' own)."""
 
     def __init__(self, app, bodies):
         self.refs = [app.refs.of(b) for b in bodies]
         self.label = f"delete {len(self.refs)} bodies" if len(self.refs) != 1 else "delete body"
         self.specs = []
         self.springs = []
+        self.joints = []
 
     def do(self, app):
         objs = {r.obj for r in self.refs}
         self.specs = [body_spec(r.obj) for r in self.refs]
         self.springs = [(app.refs.of(sp), spring_spec(sp, app.refs)) for sp in app.world.springs
                         if (sp.body_a in objs or sp.body_b in objs) and not app.is_tool_spring(sp)]
+        self.joints = [(app.refs.of(j), joint_spec(j, app.refs)) for j in app.world.joints
+                       if (j.body_a in objs or j.body_b in objs) and not app.is_tool_joint(j)]
+        for r, _ in self.joints:
+            app.deselect(r.obj)
         for r in self.refs:
             app.deselect(r.obj)
             app.world.remove(r.obj)
@@ -119,6 +141,8 @@ class RemoveBodies(Command):
             app.refs.rebind(r, make_body(app.world, spec))
         for r, spec in self.springs:
             app.refs.rebind(r, make_spring(app.world, spec))
+        for r, spec in self.joints:
+            app.refs.rebind(r, make_joint_from(app.world, spec))
 
 
 class AddSpring(Command):
@@ -158,14 +182,54 @@ class RemoveSpring(Command):
         app.refs.rebind(self.ref, make_spring(app.world, self.spec))
 
 
+class AddJoint(Command):
+    """Create a joint from a ``joint_spec``-shaped dict (kind, a, b Refs, add_joint fields)."""
+
+    def __init__(self, spec: dict, label=None):
+        self.spec = spec
+        self.ref: Ref | None = None
+        self.label = label or f"create {spec['kind']} joint"
+
+    def do(self, app):
+        j = make_joint_from(app.world, self.spec)
+        if self.ref is None:
+            self.ref = app.refs.of(j)
+        else:
+            app.refs.rebind(self.ref, j)
+
+    def undo(self, app):
+        j = self.ref.obj
+        self.spec = joint_spec(j, app.refs)
+        app.deselect(j)
+        app.world.remove(j)
+
+
+class RemoveJoint(Command):
+    label = "delete joint"
+
+    def __init__(self, app, j):
+        self.ref = app.refs.of(j)
+        self.spec = None
+
+    def do(self, app):
+        self.spec = joint_spec(self.ref.obj, app.refs)
+        app.deselect(self.ref.obj)
+        app.world.remove(self.ref.obj)
+
+    def undo(self, app):
+        app.refs.rebind(self.ref, make_joint_from(app.world, self.spec))
+
+
 class SetProperty(Command):
-    """``item.field = value`` (a body or spring).  Consecutive edits of one field merge."""
+    """``item.field = value`` (a body, spring or joint).  Consecutive edits of one field merge."""
 
     def __init__(self, app, item, field: str, value, old=None):
         self.ref = app.refs.of(item)
         self.field = field
         self.new = value
-        self.old = getattr(item, field) if old is None else old
+        if old is None:    # a distance joint's `length` reads the distance now; its parameter is the rest length
+            old = param_value(item, field) if isinstance(item, physics.Joint) else getattr(item, field)
+        self.old = old
         self.t = time.monotonic()
         self.label = f"set {field}"
 

@@ -122,7 +122,7 @@ class Comparison:
     def restart(self):
         """Clone the rivals from the main world's current state; the samples start again."""
         w = self.app.world
-        snap = snapshot(w)
+        snap = snapshot(w, self.app.editor.tool_joints)
         self.lanes = []
         for k, (solver, integ, settings) in enumerate(self.specs):
             snap["solver"] = solver

@@ -6,12 +6,14 @@ from pathlib import Path
 import physics
 
 from .commands import BODY_FIELDS, SPRING_FIELDS, History, Refs
+from .joint_specs import joint_fields, make_joint
 
 WORLD_FIELDS = ("gravity", "dt", "integrator", "broadphase", "narrowphase", "sleeping")
 
 
-def snapshot(world) -> dict:
-    """Everything needed to rebuild ``world`` through the public API."""
+def snapshot(world, skip_joints=()) -> dict:
+    """Everything needed to rebuild ``world`` through the public API (but the joints whose ids are
+    in ``skip_joints``: the tools' own, such as the mouse drag's)."""
     bodies = world.bodies
     index = {b.id: i for i, b in enumerate(bodies)}
     return {
@@ -21,6 +23,8 @@ def snapshot(world) -> dict:
         "bodies": [{"shape": b.shape, **{f: getattr(b, f) for f in BODY_FIELDS}} for b in bodies],
         "springs": [{"a": index[sp.body_a.id], "b": None if sp.body_b is None else index[sp.body_b.id],
                      **{f: getattr(sp, f) for f in SPRING_FIELDS}} for sp in world.springs],
+        "joints": [{"kind": j.kind, "a": index[j.body_a.id], "b": None if j.body_b is None else index[j.body_b.id],
+                    "fields": joint_fields(j)} for j in world.joints if j.id not in skip_joints],
     }
 
 
@@ -37,6 +41,8 @@ def restore(snap: dict):
     for s in snap["springs"]:
         w.add_spring(bodies[s["a"]], None if s["b"] is None else bodies[s["b"]],
                      **{f: s[f] for f in SPRING_FIELDS})
+    for j in snap.get("joints", ()):
+        make_joint(w, j["kind"], bodies[j["a"]], None if j["b"] is None else bodies[j["b"]], j["fields"])
     return w
 
 

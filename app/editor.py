@@ -9,8 +9,9 @@ import numpy as np
 import physics
 
 from .clipboard import Paste, copy_bodies, paste_offset, selected_bodies
-from .commands import AddBody, Group, RemoveBodies, RemoveSpring, SetProperty, SetWorld, body_spec
+from .commands import Group, RemoveBodies, RemoveJoint, RemoveSpring, SetProperty, SetWorld
 from .document import Document
+from .picking import joint_near
 from .render.decor import Decor
 from .snapping import Snap
 from .tools import TOOLS, ToolOptions
@@ -34,7 +35,8 @@ class Editor:
         self.selection: list = []
         self.hovered = None
         self.cursor = np.zeros(2)              # the world point under the pointer (m)
-        self.tool_springs: set[int] = set()    # springs the tools made (the mouse joint): not the user's
+        self.tool_springs: set[int] = set()    # springs the tools made: not the user's
+        self.tool_joints: set[int] = set()     # joints the tools made (the mouse drag's): not the user's
         self.tool_options = ToolOptions()
         self.colors: dict = {}                 # Ref -> (r, g, b): bodies' own colours (the inspector)
         self.snap = Snap()                     # grid and angle snapping (G)
@@ -82,6 +84,7 @@ class Editor:
         """Replace the document (open, reset, restore); the history starts empty."""
         self.tool.cancel()
         self.tool_springs.clear()
+        self.tool_joints.clear()
         self.selection = []
         self.hovered = None
         self.follow = None
@@ -120,7 +123,7 @@ class Editor:
             return False
 
     def set_property(self, item, field, value) -> bool:
-        """``item.field = value`` for a body or spring, undoable; a refusal is shown, not raised."""
+        """``item.field = value`` for a body, spring or joint, undoable; a refusal is shown, not raised."""
         try:
             self.execute(SetProperty(self, item, field, value))
             self.edit_error = ""
@@ -157,9 +160,12 @@ class Editor:
     def delete_selection(self):
         items = [s for s in self.selection if s.alive]
         bodies = [s for s in items if isinstance(s, physics.Body)]
-        springs = [s for s in items if isinstance(s, physics.Spring) and not any(
-            s.body_a is b or s.body_b is b for b in bodies)]
-        cmds = [RemoveSpring(self, s) for s in springs]
+
+        def free(s):        # not going with a deleted body anyway
+            return not any(s.body_a is b or s.body_b is b for b in bodies)
+        springs = [s for s in items if isinstance(s, physics.Spring) and free(s)]
+        joints = [s for s in items if isinstance(s, physics.Joint) and free(s)]
+        cmds = [RemoveSpring(self, s) for s in springs] + [RemoveJoint(self, j) for j in joints]
         if bodies:
             cmds.append(RemoveBodies(self, bodies))
         if cmds:
@@ -167,17 +173,15 @@ class Editor:
             self.execute(Group(cmds, "delete") if len(cmds) > 1 else cmds[0])
 
     def duplicate_selection(self):
-        bodies = [s for s in self.selection if isinstance(s, physics.Body) and s.alive]
+        """Ctrl+D: a copy of the selected bodies beside them, with the springs and joints among
+        them (or to the world) copied too; the copy is selected."""
+        bodies = selected_bodies(self.selection)
         if not bodies:
             return
-        cmds = []
-        for b in bodies:
-            spec = body_spec(b)
-            spec["name"] = None
-            spec["position"] = (spec["position"][0] + 0.6, spec["position"][1] + 0.6)
-            cmds.append(AddBody(spec, "duplicate"))
-        self.execute(Group(cmds, "duplicate"))
-        self.selection = [c.ref.obj for c in cmds]
+        self.tool.cancel()
+        cmd = Paste(copy_bodies(self.world, bodies, self.tool_springs, self.tool_joints), (0.6, 0.6), "duplicate")
+        self.execute(cmd)
+        self.selection = cmd.bodies()
 
     def copy_selection(self):
         """Ctrl+C: the selected bodies and the springs among them to the clipboard."""
@@ -185,7 +189,7 @@ class Editor:
         if not bodies:
             self.hint("nothing to copy: select bodies first (click, shift-click or drag a box)", error=False)
             return
-        self.clipboard = copy_bodies(self.world, bodies, self.tool_springs)
+        self.clipboard = copy_bodies(self.world, bodies, self.tool_springs, self.tool_joints)
         self.notify(f"copied {len(bodies)} bod{'y' if len(bodies) == 1 else 'ies'} (Ctrl+V pastes at the pointer)")
 
     def paste(self):
@@ -270,6 +274,14 @@ class Editor:
     def is_tool_spring(self, sp) -> bool:
         return sp.id in self.tool_springs
 
+    def is_tool_joint(self, j) -> bool:
+        return j.id in self.tool_joints
+
+    def joint_near(self, p, lines=True):
+        """The user's joint at world point ``p`` (its pin within a few pixels, or with ``lines``
+        its drawn lines), or None."""
+        return joint_near(self.world, p, self.camera.scale, self.tool_joints, lines)
+
     def spring_near(self, p, px=7.0):
         """The user's spring closest to world point ``p`` within ``px`` screen pixels, or None."""
         springs = [s for s in self.world.springs if s.id not in self.tool_springs]
@@ -319,11 +331,14 @@ class Editor:
                 continue
             if isinstance(s, physics.Body):
                 d.selected_bodies.add(s.id)
+            elif isinstance(s, physics.Joint):
+                d.selected_joints.add(s.id)
             else:
                 d.selected_springs.add(s.id)
         if self.hovered is not None and self.hovered.alive:
             d.hovered_body = self.hovered.id
         d.colors = {r.obj.id: c for r, c in self.colors.items() if r.obj is not None and r.obj.alive}
         d.hidden_springs |= self.tool_springs
+        d.hidden_joints |= self.tool_joints
         self.tool.decorate(d, tuple(self.cursor))
         return d

@@ -1,4 +1,4 @@
-"""Inspector section: every property of the selected body or spring, edited live (undoable)."""
+"""Inspector section: every property of the selected body, spring or joint, edited live (undoable)."""
 from __future__ import annotations
 
 import math
@@ -8,6 +8,7 @@ from imgui_bundle import imgui
 import physics
 
 from .base import Section, record
+from .joint_inspector import draw_joint
 from .plot_tab import probe_checkboxes
 from ..render.colors import PALETTE
 from .style import DIM, ENTER, RED
@@ -25,13 +26,15 @@ class InspectorSection(Section):
         app, ed = self.app, self.app.editor
         sel = [s for s in ed.selection if s.alive]
         if not sel:
-            imgui.text_colored(DIM, "Nothing selected: click a body or a spring.")
+            imgui.text_colored(DIM, "Nothing selected: click a body, a spring or a joint.")
             return
         if len(sel) > 1:
             imgui.text(f"{len(sel)} items selected")
         item = sel[-1]
         if isinstance(item, physics.Body):
             self.body(item)
+        elif isinstance(item, physics.Joint):
+            draw_joint(self, item)
         else:
             self.spring(item)
         if imgui.button("Delete (Del)"):

@@ -39,6 +39,7 @@ class ToolsSection(Section):
         imgui.text_colored(DIM, "Drag box / n-gon / circle buttons into the scene to drop one.")
         imgui.pop_text_wrap_pos()
         self.options(ed.tool_options)
+        self.joint_options(ed.tool_options, ed.tool.name)
         self.snapping(ed.snap)
 
     def snapping(self, snap):
@@ -79,6 +80,27 @@ class ToolsSection(Section):
         ch, v = imgui.slider_float("mouse joint Hz", o.joint_hertz, 0.5, 20.0, "%.1f")
         if ch:
             o.joint_hertz = v
+
+    def joint_options(self, o, tool):
+        """The joint tools' options, shown while one of them is active."""
+        if tool == "motor":
+            ch, v = imgui.slider_float("motor speed", o.motor_speed, -20.0, 20.0, "%.2f")
+            record(self.app, "tools:motor_speed")
+            if ch:
+                o.motor_speed = v
+            ch, v = imgui.slider_float("motor torque", o.motor_torque, 0.0, 2000.0, "%.1f",
+                                       imgui.SliderFlags_.logarithmic.value)
+            if ch:
+                o.motor_torque = v
+        elif tool == "wheel":
+            ch, v = imgui.slider_float("suspension Hz", o.wheel_hertz, 0.0, 20.0, "%.1f")
+            if ch:
+                o.wheel_hertz = v
+            ch, v = imgui.slider_float("susp. damping", o.wheel_damping_ratio, 0.0, 2.0, "%.2f")
+            if ch:
+                o.wheel_damping_ratio = v
+        elif tool == "slider":
+            _, o.slider_limits = imgui.checkbox("limit travel to the drag", o.slider_limits)
 
     def drop(self):
         """A palette button dragged out of the panels and released over the scene drops a body there

@@ -33,3 +33,7 @@ VEL_COLOR = _rgba("#6df0ff", 0.9)
 COM_COLOR = _rgba("#ffffff")
 COM_EDGE = _rgba("#202020")
 PREVIEW_COLOR = _rgba("#ffffff", 0.85)
+JOINT_COLOR = _rgba("#ff6ec7")       # joints: pink, apart from the springs' yellow and the selection's orange
+JOINT_SELECTED = _rgba("#fff2c0")
+JOINT_BROKEN = _rgba("#8a8a8a", 0.7)
+JOINT_HUB = _rgba("#2a1f2e")         # a wheel joint's hub: dark inside the joint-coloured ring

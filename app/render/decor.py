@@ -12,6 +12,7 @@ class Overlays:
     velocities: bool = False
     com: bool = False
     springs: bool = True
+    joints: bool = True
 
 
 @dataclass
@@ -21,6 +22,8 @@ class Decor:
     hovered_body: int | None = None
     selected_springs: set = field(default_factory=set)  # spring ids
     hidden_springs: set = field(default_factory=set)    # spring ids drawn as plain lines (mouse joint)
+    selected_joints: set = field(default_factory=set)   # joint ids
+    hidden_joints: set = field(default_factory=set)     # joint ids the tools draw themselves (the mouse drag)
     segments: list = field(default_factory=list)        # (p0, p1, width_px, rgba)
     points: list = field(default_factory=list)          # (p, radius_px, rgba)
     colors: dict = field(default_factory=dict)          # body id -> (r, g, b) chosen in the inspector

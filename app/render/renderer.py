@@ -20,6 +20,7 @@ from .decor import Decor, Overlays
 from .fans import Fans
 from .geometry import arrows, coils, discs, grid_lines, rects, thick_segments
 from .gl import Layer, load_program
+from .joints import joint_lines, joint_markers
 
 F32 = np.float32
 
@@ -99,7 +100,7 @@ class Renderer:
 
     @staticmethod
     def line_layer(rd, scale, overlays, decor, spring_ids, quadtree, velocities):
-        """Springs, the line overlays (quadtree, AABBs, velocities, normals) and tool previews."""
+        """Springs, joints, the line overlays (quadtree, AABBs, velocities, normals) and tool previews."""
         segs = []
         ends = rd.spring_ends
         if overlays.springs and len(ends):
@@ -110,6 +111,8 @@ class Renderer:
                 sel = np.isin(spring_ids, list(decor.selected_springs) or [-1])
             segs += coils(ends[mask & ~sel], scale, SPRING_COLOR)
             segs += coils(ends[mask & sel], scale, SPRING_SELECTED, 3.0)
+        if overlays.joints and rd.joints is not None and len(rd.joints):
+            segs.append(joint_lines(rd.joints, scale, decor.selected_joints, decor.hidden_joints))
         if overlays.quadtree and quadtree is not None and len(quadtree):
             segs.append(rects(quadtree, 1.0, QUADTREE_COLOR, scale))
         if overlays.aabbs and len(rd.aabb):
@@ -136,8 +139,10 @@ class Renderer:
 
     @staticmethod
     def marker_layer(rd, scale, overlays, decor):
-        """Contact points, centres of mass and tool points as small discs."""
+        """Joint pins and hubs, contact points, centres of mass and tool points as small discs."""
         mk = []
+        if overlays.joints and rd.joints is not None and len(rd.joints):
+            mk.append(joint_markers(rd.joints, scale, decor.selected_joints, decor.hidden_joints))
         if overlays.contacts and len(rd.contact_points):
             p = rd.contact_points
             mk.append(discs(p, np.full(len(p), 3.5 / scale), np.zeros(len(p)), 0.0, CONTACT_COLOR, CONTACT_COLOR))

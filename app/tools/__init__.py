@@ -4,12 +4,19 @@ append it here (docs/sandbox.md, "Adding a tool")."""
 from .base import Tool, ToolOptions, body_args
 from .box import BoxTool
 from .circle import CircleTool
+from .fixate import FixateTool
+from .hinge import HingeTool
+from .motor import MotorTool
 from .ngon import NgonTool
 from .polygon import PolygonTool
+from .rope import RopeTool
 from .select import SelectTool
+from .slider import SliderTool
 from .spring import SpringTool
 from .tracer import TracerTool
+from .wheel import WheelTool
 
-TOOLS = (SelectTool, BoxTool, PolygonTool, NgonTool, CircleTool, SpringTool, TracerTool)
+TOOLS = (SelectTool, BoxTool, PolygonTool, NgonTool, CircleTool, SpringTool, TracerTool, HingeTool, MotorTool,
+         FixateTool, SliderTool, RopeTool, WheelTool)
 
 __all__ = ["TOOLS", "Tool", "ToolOptions", "body_args"]

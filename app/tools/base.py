@@ -22,8 +22,13 @@ class ToolOptions:
         self.restitution = 0.1
         self.spring_stiffness = 60.0
         self.spring_damping = 1.0
-        self.joint_hertz = 4.0
+        self.joint_hertz = 4.0           # the mouse drag's joint
         self.joint_damping_ratio = 0.7
+        self.motor_speed = 2.0           # motor tool (rad/s, counter-clockwise) and its torque (N m)
+        self.motor_torque = 50.0
+        self.wheel_hertz = 4.0           # wheel tool: suspension frequency (Hz) and damping ratio
+        self.wheel_damping_ratio = 0.7
+        self.slider_limits = True        # slider tool: the dragged segment is the travel
 
 
 def body_args(opts: ToolOptions, position, angle=0.0) -> dict:

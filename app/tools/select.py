@@ -1,9 +1,7 @@
-"""Select tool: click to select (Shift adds), drag on empty space to box-select, drag a dynamic
-body on a soft mouse joint (release throws it), drag a static or kinematic body to move it, and
-the selection's move and rotate handles (``handles.py``)."""
+"""Select tool: click to select (Shift adds) a body, a spring or a joint, drag on empty space to
+box-select, drag a dynamic body on the core's mouse joint (release throws it), drag a static or
+kinematic body to move it, and the selection's move and rotate handles (``handles.py``)."""
 from __future__ import annotations
-
-import math
 
 import numpy as np
 
@@ -12,17 +10,19 @@ from .base import JOINT, Tool
 from .handles import Handles
 
 BAND = (0.65, 0.8, 1.0, 0.8)
+#: the mouse joint's force limit per kilogram of the dragged body (N/kg: 100 g)
+MOUSE_FORCE_PER_KG = 1000.0
 
 
 class SelectTool(Tool):
     name = "select"
     snaps = False
-    help = "click: select (shift: add); drag empty space: box select; drag a body: pull it on a " \
-           "spring (static: move it); handles: move / rotate the selection"
+    help = "click: select a body, spring or joint (shift: add); drag empty space: box select; drag a " \
+           "body: pull it on a mouse joint (static: move it); handles: move / rotate the selection"
 
     def __init__(self, editor):
         super().__init__(editor)
-        self.joint = None          # the temporary world spring of the mouse joint
+        self.joint = None          # the mouse joint (kind "mouse") while a dynamic body is dragged
         self.body = None
         self.moving = None         # (body, grab offset, start position) for static/kinematic moves
         self.cursor = None
@@ -37,10 +37,11 @@ class SelectTool(Tool):
         if grip is not None:
             self.handles.press(p, grip)
             return
-        b = ed.world.query_point(p)
-        spring = None if b is not None else ed.spring_near(p)
-        if spring is not None:
-            ed.select(spring, add=bool(mods & K.MOD_SHIFT))
+        pin = ed.joint_near(p, lines=False)       # a pin lies on a body: it is picked first
+        b = ed.world.query_point(p) if pin is None else None
+        link = pin or (None if b is not None else (ed.spring_near(p) or ed.joint_near(p)))
+        if link is not None:
+            ed.select(link, add=bool(mods & K.MOD_SHIFT))
             return
         if b is None:
             if not mods & K.MOD_SHIFT:
@@ -56,17 +57,16 @@ class SelectTool(Tool):
             self.moving = (b, np.array(b.position) - np.array(p), b.position)
 
     def start_joint(self, b, p):
-        """A zero-length world spring from the grabbed point to the cursor, tuned to the body's mass
-        so it pulls at ``joint_hertz`` with ``joint_damping_ratio`` (k = m w^2, c = 2 m zeta w)."""
+        """The core's mouse joint from the grabbed point to the cursor: a soft constraint at
+        ``joint_hertz`` with ``joint_damping_ratio`` (its softness scales with the body's mass, so
+        every body follows alike), its force capped at MOUSE_FORCE_PER_KG times the mass (Box2D's
+        samples cap it the same way) so a pinned or wedged body cannot be torn loose."""
         opts = self.editor.tool_options
-        w = 2 * math.pi * opts.joint_hertz
-        m = max(b.mass, 1e-6)
         self.body = b
-        self.joint = self.editor.world.add_spring(b, None, anchor_a=b.world_to_local(p), anchor_b=tuple(p),
-                                                  stiffness=m * w * w,
-                                                  damping=2 * m * opts.joint_damping_ratio * w,
-                                                  rest_length=0.0)
-        self.editor.tool_springs.add(self.joint.id)
+        self.joint = self.editor.world.add_joint("mouse", b, None, target=tuple(map(float, p)),
+                                                 hertz=opts.joint_hertz, damping_ratio=opts.joint_damping_ratio,
+                                                 max_force=MOUSE_FORCE_PER_KG * max(b.mass, 1e-6))
+        self.editor.tool_joints.add(self.joint.id)
 
     def drag(self, p):
         self.cursor = np.array(p, dtype=float)
@@ -86,7 +86,9 @@ class SelectTool(Tool):
             if not (self.joint.alive and self.body.alive):
                 self.end_joint()
             elif self.cursor is not None:
-                self.joint.anchor_b = tuple(self.cursor)
+                target = tuple(map(float, self.cursor))
+                if target != self.joint.target:      # an unchanged target leaves a resting body asleep
+                    self.joint.target = target
 
     def release(self, p):
         if self.handles.active is not None:
@@ -106,8 +108,8 @@ class SelectTool(Tool):
     def end_joint(self):
         """Remove the mouse joint (on release, and before a save so it is never written)."""
         if self.joint is not None:
+            self.editor.tool_joints.discard(self.joint.id)
             if self.joint.alive:
-                self.editor.tool_springs.discard(self.joint.id)
                 self.editor.world.remove(self.joint)
             self.joint = None
             self.body = None
@@ -143,8 +145,7 @@ class SelectTool(Tool):
         if self.joint is None and self.moving is None:
             self.handles.decorate(decor)
         if self.joint is not None and self.joint.alive:
-            pa, pb = self.joint.endpoints()
-            decor.hidden_springs.add(self.joint.id)
+            pa, pb = self.joint.anchor_a, self.joint.target
             decor.segments.append((pa, pb, 1.5, JOINT))
             decor.points.append((pa, 4.0, JOINT))
             decor.points.append((pb, 3.0, (1, 1, 1, 0.9)))

@@ -41,3 +41,10 @@ def purple_pixels(img, x0, y0, x1, y1) -> int:
     a = img[max(0, y0):y1, max(0, x0):x1]
     r, g, b = a[..., 0], a[..., 1], a[..., 2]
     return int(np.count_nonzero((b - g > 35) & (r - g > 12) & (b > 100)))
+
+
+def pink_pixels(img, x0, y0, x1, y1) -> int:
+    """Joints (#ff6ec7, app/render/colors.py JOINT_COLOR): red and blue high, green low."""
+    a = img[max(0, int(y0)):int(y1), max(0, int(x0)):int(x1)]
+    r, g, b = a[..., 0], a[..., 1], a[..., 2]
+    return int(np.count_nonzero((r > 200) & (b > 140) & (r - g > 90) & (b - g > 50)))

@@ -1,0 +1,126 @@
+"""The inspector's joint part: the joint's readouts (angle or translation or length, speed, motor
+torque/force, reaction force and torque of the last step) and every parameter of its kind,
+edited live through undoable commands.  The parameter list is physics/joint_params.py's, so a
+parameter the core adds shows up here without an edit."""
+from __future__ import annotations
+
+import math
+
+from imgui_bundle import imgui
+
+from physics import joint_params as jp
+
+from ..joint_specs import param_value
+from .base import record
+from .style import DIM, ENTER, RED
+
+#: step and fast step of a number field, by the parameter's rule
+STEPS = {"num": (0.1, 1.0), "nonneg": (0.1, 1.0), "limit": (0.05, 0.5), "length": (0.05, 0.5)}
+#: readouts by kind: (label, attribute, unit)
+READOUTS = {
+    "revolute": (("angle", "angle", "rad"), ("speed", "speed", "rad/s"), ("motor torque", "motor_torque", "N m")),
+    "prismatic": (("translation", "translation", "m"), ("speed", "speed", "m/s"), ("motor force", "motor_force", "N")),
+    "weld": (("angle", "angle", "rad"),),
+    "distance": (("length", "length", "m"), ("speed", "speed", "m/s")),
+    "wheel": (("translation", "translation", "m"), ("speed", "speed", "rad/s"),
+              ("motor torque", "motor_torque", "N m")),
+    "motor": (("angle", "angle", "rad"),),
+    "mouse": (),
+}
+
+
+def body_label(b):
+    return "world" if b is None else str(b.name or b.id)
+
+
+def readouts(j):
+    """The joint's state after the last step, one dim line each; the reaction force shown with its
+    magnitude (what a break_force is compared with)."""
+    for label, attr, unit in READOUTS[j.kind]:
+        imgui.text_colored(DIM, f"{label}: {getattr(j, attr):.4g} {unit}")
+    fx, fy = j.reaction_force
+    imgui.text_colored(DIM, f"reaction force: ({fx:.4g}, {fy:.4g}) N  |F| {math.hypot(fx, fy):.4g} N")
+    imgui.text_colored(DIM, f"reaction torque: {j.reaction_torque:.4g} N m")
+    if j.broken:
+        imgui.text_colored(RED, "broken: the reaction exceeded its break threshold")
+
+
+def optional_number(app, j, name, value, rule, key):
+    """A parameter that may be unset (None: no limit): a checkbox to set it, then its field."""
+    ed = app.editor
+    ch, on = imgui.checkbox(f"##set:{name}", value is not None)
+    record(app, f"{key}:set")
+    if imgui.is_item_hovered():
+        imgui.set_tooltip(f"{name}: {'unset it' if value is not None else 'set it'}")
+    if ch:
+        start = 0.0 if rule == "limit" else max(getattr(j, "length", 0.0) if j.kind == "distance" else 0.0, 0.0)
+        ed.set_property(j, name, start if on else None)
+        return
+    imgui.same_line()
+    if value is None:
+        imgui.text_colored(DIM, f"{name}: none")
+        return
+    small, big = STEPS[rule]
+    ch, v = imgui.input_float(name, value, small, big, "%.4g", ENTER)
+    record(app, key)
+    if ch:
+        ed.set_property(j, name, v)
+
+
+def parameter(app, j, name, p):
+    ed = app.editor
+    key = f"inspector:joint:{name}"
+    value = param_value(j, name)
+    if p.rule == "vec":
+        ch, v = imgui.input_float2(name, list(value), "%.4g", ENTER)
+        record(app, key)
+        if ch:
+            ed.set_property(j, name, tuple(v))
+    elif p.rule in ("limit", "length") and name != "length":
+        optional_number(app, j, name, value, p.rule, key)
+    else:
+        small, big = STEPS[p.rule]
+        ch, v = imgui.input_float(name, value, small, big, "%.4g", ENTER)
+        record(app, key)
+        if ch:
+            ed.set_property(j, name, v)
+    if imgui.is_item_hovered():
+        imgui.set_tooltip(p.doc)
+
+
+def common(app, j):
+    """collide_connected, the break thresholds and the name: what every kind has."""
+    ed = app.editor
+    ch, v = imgui.checkbox("collide connected", j.collide_connected)
+    record(app, "inspector:joint:collide_connected")
+    if ch:
+        ed.set_property(j, "collide_connected", v)
+    for name in ("break_force", "break_torque"):
+        value = getattr(j, name)
+        ch, on = imgui.checkbox(f"##set:{name}", value is not None)
+        if ch:
+            ed.set_property(j, name, 1000.0 if on else None)
+            continue
+        imgui.same_line()
+        if value is None:
+            imgui.text_colored(DIM, f"{name}: unbreakable")
+            continue
+        ch, v = imgui.input_float(name, value, 10.0, 100.0, "%.4g", ENTER)
+        record(app, f"inspector:joint:{name}")
+        if ch:
+            ed.set_property(j, name, v)
+    ch, v = imgui.input_text("name##joint", j.name or "", ENTER)
+    if ch:
+        ed.set_property(j, "name", v or None)
+
+
+def draw_joint(section, j):
+    """The whole joint part of the inspector for joint ``j``."""
+    app = section.app
+    imgui.text(f"Joint {j.name or j.id}: {j.kind}, {body_label(j.body_a)} - {body_label(j.body_b)}")
+    record(app, "inspector:joint")
+    readouts(j)
+    section.error()
+    for name, p in jp.PARAMS[j.kind].items():
+        parameter(app, j, name, p)
+    common(app, j)
