@@ -9,7 +9,9 @@ sandbox loads the other's from disk.  Calling a stage out of order on a probe wo
 the argument types matter to the compiler, the results are thrown away.
 
 Unit names: ``broad:<broadphase>``, ``narrow``, ``solve:<solver>:<integrator>``, ``frame``, ``extras``
-(the quadtree overlay), ``step:<solver>:<integrator>:<broadphase>`` (a whole step: what is left).
+(the quadtree overlay), ``step:<solver>:<integrator>:<broadphase>`` (a whole step: what is left),
+``joints:<solver>:<integrator>`` (the joint stage, which a step compiles only once a world has a
+joint: compiled in the background so the first joint a tool makes does not stop the window).
 """
 from __future__ import annotations
 
@@ -78,10 +80,27 @@ def _step(solver, integrator, bp):
     w.query_point((0.0, 0.5))
 
 
+def _joints(solver, integrator):
+    """A step of the probe world with one joint of every kind the sandbox's tools make (and the
+    mouse drag's), so the joint stage of this mode is in the cache."""
+    w = probe_world(solver, integrator)
+    ground, box, top, disc = w.bodies[0], w.bodies[1], w.bodies[2], w.bodies[3]
+    w.add_joint("revolute", top, box, anchor=(0.1, 1.0), motor_speed=1.0, max_motor_torque=5.0)
+    w.add_joint("weld", box, ground, anchor=(0.0, 0.0))
+    w.add_joint("prismatic", top, None, anchor=(0.2, 1.5), axis=(0.0, 1.0), lower=-1.0, upper=1.0)
+    w.add_joint("distance", disc, None, anchor_b=(1.5, 3.0), max_length=3.0)
+    w.add_joint("wheel", box, w.bodies[4], anchor=(1.6, 1.3))
+    w.add_joint("motor", w.bodies[5], ground)
+    w.add_joint("mouse", w.bodies[4], None, target=(2.0, 2.0))
+    for _ in range(3):
+        w.step()
+
+
 def run(unit: str) -> None:
     """Compile (or load from the cache) the kernels of ``unit``; ValueError for an unknown name."""
     kind, *args = unit.split(":")
-    fn = {"broad": _broad, "narrow": _narrow, "solve": _solve, "frame": _frame, "extras": _extras, "step": _step}.get(kind)
+    fn = {"broad": _broad, "narrow": _narrow, "solve": _solve, "frame": _frame, "extras": _extras, "step": _step,
+          "joints": _joints}.get(kind)
     if fn is None:
         raise ValueError(f"unknown compile unit {unit!r}")
     fn(*args)
@@ -97,11 +116,16 @@ def gate_units(solver: str, integrator: str, broadphase: str) -> tuple[list[str]
 
 def background_units(solver: str, integrator: str, broadphase: str) -> list[str]:
     """Everything else the sandbox can switch to, the likeliest first: the other broad phases,
-    the quadtree overlay, then the other solver modes."""
+    the open mode's joint stage (the joint tools), the quadtree overlay, then the other solver modes."""
     out = [f"broad:{bp}" for bp in ("brute", "sweep", "quadtree") if bp != broadphase]
+    out.append(joints_unit(solver, integrator))
     out.append("extras")
     out += [f"solve:{s}:{integrator}" for s in options.SOLVERS if s != solver]
     return out
+
+
+def joints_unit(solver: str, integrator: str) -> str:
+    return f"joints:{solver}:{integrator}"
 
 
 def cache_dir():

@@ -200,18 +200,23 @@ class Warmup:
             pass
 
     def _serve(self):
-        """After the gate: load the modes the user switches to (``prioritize``) and the quadtree
-        overlay's kernels, each once the helper has them in the cache."""
-        extras = self.helper is not None and "extras" in self._initial_queue
+        """After the gate: load the modes the user switches to (``prioritize``), the open mode's
+        joint stage and the quadtree overlay's kernels, each once the helper has them in the cache."""
+        later = [u for u in (compile_units.joints_unit(self.solver, self.integrator), "extras")
+                 if self.helper is not None and u in self._initial_queue]
+
+        def settled():
+            return [u for u in later if self.helper.settled(u)]
         while True:
             with self._cv:
                 self._busy = False
-                self._cv.wait_for(lambda: self._wanted or (extras and self.helper.settled("extras")))
+                self._cv.wait_for(lambda: self._wanted or settled())
                 self._busy = True
                 key = self._wanted.pop(0) if self._wanted else None
             if key is None:
-                extras = False
-                self._unit("extras")
+                unit = settled()[0]
+                later.remove(unit)
+                self._unit(unit)
                 continue
             solver, integrator, bp = key
             self.label = f"{solver} ({integrator})"

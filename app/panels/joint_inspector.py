@@ -45,6 +45,13 @@ def readouts(j):
         imgui.text_colored(RED, "broken: the reaction exceeded its break threshold")
 
 
+def coordinate(j) -> float:
+    """The joint's coordinate now: what its limits bound (angle, translation or length)."""
+    if j.kind == "revolute":
+        return j.angle
+    return j.length if j.kind == "distance" else j.translation
+
+
 def optional_number(app, j, name, value, rule, key):
     """A parameter that may be unset (None: no limit): a checkbox to set it, then its field."""
     ed = app.editor
@@ -52,9 +59,8 @@ def optional_number(app, j, name, value, rule, key):
     record(app, f"{key}:set")
     if imgui.is_item_hovered():
         imgui.set_tooltip(f"{name}: {'unset it' if value is not None else 'set it'}")
-    if ch:
-        start = 0.0 if rule == "limit" else max(getattr(j, "length", 0.0) if j.kind == "distance" else 0.0, 0.0)
-        ed.set_property(j, name, start if on else None)
+    if ch:     # a limit switched on starts where the joint is now (so it holds it there, not jumps)
+        ed.set_property(j, name, coordinate(j) if on else None)
         return
     imgui.same_line()
     if value is None:
