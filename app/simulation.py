@@ -56,6 +56,11 @@ class Simulation:
             self.warmup.prioritize(w.solver, w.integrator, bp)
             self.compiling_note = f"compiling {w.solver} ({w.integrator}, {bp} broad phase) ..."
             return 0.0
+        if w.joints and not self.warmup.joints_ready(w.solver, w.integrator):
+            # the joint stage compiles once a world has a joint: in the warmup thread, not in this step
+            self.warmup.want_unit(compile_units.joints_unit(w.solver, w.integrator))
+            self.compiling_note = f"compiling the joints of {w.solver} ({w.integrator}) ..."
+            return 0.0
         if not self.lock.acquire(blocking=False):
             self.compiling_note = "compiling kernels ..."
             return 0.0

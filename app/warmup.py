@@ -70,19 +70,23 @@ class Warmup:
         self.cache = compile_units.cache_dir()
         mine, theirs = compile_units.gate_units(*self.key)
         self.final = "step:" + ":".join(self.key)
+        # a scene with joints runs only once its mode's joint stage is loaded too (after the step)
+        self.after_final = [compile_units.joints_unit(self.solver, self.integrator)] if world.joints else []
         background = [u for u in compile_units.background_units(*self.key) if not self.cached(u)]
         if os.environ.get("STELKROPP_BACKGROUND_COMPILE", "1") == "0":
             background = []     # other modes only when switched to (e.g. a CI box with one core)
-        self.warm = all(self.cached(u) for u in mine + theirs + [self.final])
+        self.warm = all(self.cached(u) for u in mine + theirs + [self.final] + self.after_final)
         if self.warm:
             mine, theirs = [], []      # all on disk: one probe step here loads it all, at once
         self.mine, self.theirs = mine, theirs
         self.helper = CompileHelper(self._changed) if helper and (theirs or background) else None
         # when the helper is done with its share first, it takes this process's last units
         self._initial_queue = theirs + mine[:0:-1] + background
-        self.expected = self._expected(mine + theirs + [self.final])
+        self.expected = self._expected(mine + theirs + [self.final] + self.after_final)
         self.kernels0 = self.counter.n
         self.warmed: set[tuple[str, str, str]] = set()
+        self.loaded: set[str] = set()           # units loaded (or compiled) in this process
+        self._wanted_units: list[str] = []      # units the window waits for (a mode's joint stage)
         self.errors: list[str] = []
         self.label = "starting"
         self.stage = "starting"
@@ -146,6 +150,7 @@ class Warmup:
             traceback.print_exc()
         else:
             compile_units.mark(unit)
+            self.loaded.add(unit)
 
     def _wait_helper(self, units) -> None:
         """Wait until the helper settled ``units``; compile here the ones it could not."""
@@ -180,6 +185,8 @@ class Warmup:
         self.stage = "waiting for the other core"
         self._wait_helper(self.theirs + pending)
         self._unit(self.final)
+        for u in self.after_final:
+            self._unit(u)
         self._save_counts(self.counter.n - t_cold)
         self.warmed.add(self.key)
         self.t_gate = time.monotonic() - self.t0
@@ -210,9 +217,17 @@ class Warmup:
         while True:
             with self._cv:
                 self._busy = False
-                self._cv.wait_for(lambda: self._wanted or settled())
+                self._cv.wait_for(lambda: self._wanted or self._wanted_units or settled())
                 self._busy = True
-                key = self._wanted.pop(0) if self._wanted else None
+                unit = self._wanted_units.pop(0) if self._wanted_units else None
+                key = self._wanted.pop(0) if self._wanted and unit is None else None
+            if unit is not None:
+                self.label = unit
+                self._wait_helper([unit])
+                self._unit(unit)
+                if unit in later:
+                    later.remove(unit)
+                continue
             if key is None:
                 unit = settled()[0]
                 later.remove(unit)
@@ -233,6 +248,18 @@ class Warmup:
                 return
             self._wanted.append(key)
             self._cv.notify_all()
+
+    def want_unit(self, unit: str) -> None:
+        """Load ``unit`` next (from the cache, or compiled: by the helper if it has it queued)."""
+        with self._cv:
+            if unit in self.loaded or unit in self._wanted_units:
+                return
+            self._wanted_units.append(unit)
+            self._cv.notify_all()
+
+    def joints_ready(self, solver: str, integrator: str) -> bool:
+        """Is this mode's joint stage loaded here (a step with joints will not stop to compile)?"""
+        return compile_units.joints_unit(solver, integrator) in self.loaded
 
     def can_step(self, solver: str, integrator: str, broadphase: str | None = None) -> bool:
         """Are the kernels of this mode loaded here (a step will not stop to compile)?"""

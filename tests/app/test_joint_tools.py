@@ -63,22 +63,23 @@ def new_joint(app, n, what):
 
 
 #: per tool: how it is used (click at a point, or drag from a point to a point), the joint it must
-#: make (kind, body a, body b) and a screen box (world centre, half size px) where it is drawn
+#: make (kind, body a, body b) and a screen box (world centre, half width and height px) where it
+#: is drawn: the pin, the weld mark, the axis above the slider, the rope, the wheel's hub and coil
 CASES = (
-    ("hinge", ("click", (-8.0, 4.3)), ("revolute", "h", None), ((-8.0, 4.3), 9)),
-    ("motor", ("click", (-5.0, 4.0)), ("revolute", "m", None), ((-5.0, 4.0), 9)),
-    ("fixate", ("click", (-1.7, 4.2)), ("weld", "f2", "f1"), ((-1.7, 4.2), 9)),
-    ("slider", ("drag", (1.5, 4.0), (1.5, 6.5)), ("prismatic", "s", None), ((1.5, 5.9), 8)),
-    ("rope", ("drag", (4.5, 3.0), (4.5, 6.5)), ("distance", "r", None), ((4.5, 5.5), 8)),
-    ("wheel", ("click", (8.7, 3.9)), ("wheel", "chassis", "wh"), ((8.7, 3.9), 10)),
+    ("hinge", ("click", (-8.0, 4.3)), ("revolute", "h", None), ((-8.0, 4.3), 9, 9)),
+    ("motor", ("click", (-5.0, 4.0)), ("revolute", "m", None), ((-5.0, 4.0), 9, 9)),
+    ("fixate", ("click", (-1.7, 4.2)), ("weld", "f2", "f1"), ((-1.7, 4.2), 9, 9)),
+    ("slider", ("drag", (1.5, 4.0), (1.5, 6.5)), ("prismatic", "s", None), ((1.5, 5.6), 8, 20)),
+    ("rope", ("drag", (4.5, 3.0), (4.5, 6.5)), ("distance", "r", None), ((4.5, 5.2), 8, 20)),
+    ("wheel", ("click", (8.7, 3.9)), ("wheel", "chassis", "wh"), ((8.7, 4.1), 10, 16)),
 )
 
 
 def pinks(img, st):
     out = {}
-    for tool, _, _, (p, half) in CASES:
+    for tool, _, _, (p, hw, hh) in CASES:
         x, y = to_screen(st, p)
-        out[tool] = pink_pixels(img, x - half, y - half, x + half, y + half)
+        out[tool] = pink_pixels(img, x - hw, y - hh, x + hw, y + hh)
     return out
 
 
@@ -131,10 +132,8 @@ def test_each_joint_tool_draws_undoes_duplicates_and_saves(launch, tmp_path):
     assert sorted((j["kind"], j["a"], j["b"]) for j in st["joints"]) == \
         sorted((j["kind"], j["a"], j["b"]) for j in made), "redo brings back the same joints"
     # duplicate the welded pair: the weld between them comes along (Ctrl+D), and undo
-    app.click(*to_screen(st0, (-2.3, 3.7)))                   # f1 alone (away from the weld mark)
-    app.xdo("keydown", "shift")
-    app.click(*to_screen(st0, (-1.1, 4.7)))                   # shift-click f2
-    app.xdo("keyup", "shift")
+    app.drag(to_screen(st0, (-2.8, 5.2)), to_screen(st0, (-0.6, 3.2)), steps=10)   # box select f1, f2
+    app.xdo("mouseup", 1)
     app.wait(lambda s: sorted(s["selection"]) == sorted([names["f1"], names["f2"]]), 10, "f1 and f2 selected")
     app.key("ctrl+d")
     st = app.wait(lambda s: s["n_joints"] == len(CASES) + 1, 10, "the duplicated weld")
