@@ -221,9 +221,10 @@ class Warmup:
                 self._busy = True
                 unit = self._wanted_units.pop(0) if self._wanted_units else None
                 key = self._wanted.pop(0) if self._wanted and unit is None else None
-            if unit is not None:
+            if unit is not None:      # the window waits for it: here now, unless the helper is on it
                 self.label = unit
-                self._wait_helper([unit])
+                if self.helper is not None and not self.helper.claim(unit):
+                    self._wait_helper([unit])
                 self._unit(unit)
                 if unit in later:
                     later.remove(unit)

@@ -26,7 +26,9 @@ class InspectorSection(Section):
         app, ed = self.app, self.app.editor
         sel = [s for s in ed.selection if s.alive]
         if not sel:
-            imgui.text_colored(DIM, "Nothing selected: click a body, a spring or a joint.")
+            imgui.push_text_wrap_pos(0)
+            imgui.text_colored(DIM, "Nothing selected: click a body, a spring or a joint's pin.")
+            imgui.pop_text_wrap_pos()
             return
         if len(sel) > 1:
             imgui.text(f"{len(sel)} items selected")
