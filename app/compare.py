@@ -198,6 +198,10 @@ class Comparison:
             warm.prioritize(lane.solver, lane.integrator, bp)
             lane.waiting = f"compiling {lane.solver} ({lane.integrator}) ..."
             return False
+        if lane.world.joints and not warm.joints_ready(lane.solver, lane.integrator):
+            warm.want_unit(compile_units.joints_unit(lane.solver, lane.integrator))
+            lane.waiting = f"compiling the joints of {lane.solver} ({lane.integrator}) ..."
+            return False
         lock = self.app.sim.lock
         if not lock.acquire(blocking=False):
             lane.waiting = "compiling kernels ..."

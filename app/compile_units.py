@@ -11,7 +11,8 @@ the argument types matter to the compiler, the results are thrown away.
 Unit names: ``broad:<broadphase>``, ``narrow``, ``solve:<solver>:<integrator>``, ``frame``, ``extras``
 (the quadtree overlay), ``step:<solver>:<integrator>:<broadphase>`` (a whole step: what is left),
 ``joints:<solver>:<integrator>`` (the joint stage, which a step compiles only once a world has a
-joint: compiled in the background so the first joint a tool makes does not stop the window).
+joint: loaded before the scene runs, since the mouse drag is a joint, and for a mode switched to
+before a world with joints steps in it, so no step stops the window to compile).
 """
 from __future__ import annotations
 
@@ -116,9 +117,9 @@ def gate_units(solver: str, integrator: str, broadphase: str) -> tuple[list[str]
 
 def background_units(solver: str, integrator: str, broadphase: str) -> list[str]:
     """Everything else the sandbox can switch to, the likeliest first: the other broad phases,
-    the open mode's joint stage (the joint tools), the quadtree overlay, then the other solver modes."""
+    the quadtree overlay, then the other solver modes.  (The open mode's joint stage is in the
+    gate: the mouse drag needs it.)"""
     out = [f"broad:{bp}" for bp in ("brute", "sweep", "quadtree") if bp != broadphase]
-    out.append(joints_unit(solver, integrator))
     out.append("extras")
     out += [f"solve:{s}:{integrator}" for s in options.SOLVERS if s != solver]
     return out

@@ -21,6 +21,16 @@ from .tracers import Tracers
 #: 1000 Hz a frame (at most 4 steps) covers under 7 ms of simulated time, a slide show
 STEP_RATE = (10.0, 1000.0)
 HINT_SECONDS = 5.0
+MOTOR_PINS_MAX = 500      # more joints than this: motors are drawn as plain pins (a Python loop a frame)
+
+
+def motor_pins(world) -> dict:
+    """{joint id: angle of the body its motor turns} for the hinges and wheels whose motor is on."""
+    joints = world.joints
+    if len(joints) > MOTOR_PINS_MAX:
+        return {}
+    return {j.id: (j.body_b.angle if j.kind == "wheel" else j.body_a.angle) for j in joints
+            if j.kind in ("revolute", "wheel") and j.max_motor_torque > 0}
 
 
 class Editor:
@@ -340,5 +350,6 @@ class Editor:
         d.colors = {r.obj.id: c for r, c in self.colors.items() if r.obj is not None and r.obj.alive}
         d.hidden_springs |= self.tool_springs
         d.hidden_joints |= self.tool_joints
+        d.motor_pins = motor_pins(self.world)
         self.tool.decorate(d, tuple(self.cursor))
         return d

@@ -17,13 +17,16 @@ class ToolsSection(Section):
 
     def draw(self):
         ed = self.app.editor
+        per_row = 5           # thirteen tools in three rows: the inspector below stays on screen
+        gap = imgui.get_style().item_spacing.x
+        width = (imgui.get_content_region_avail().x - (per_row - 1) * gap) / per_row
         for i, name in enumerate(ed.tool_names):
-            if i % 4:
+            if i % per_row:
                 imgui.same_line()
             active = ed.tool.name == name
             if active:
                 imgui.push_style_color(imgui.Col_.button.value, imgui.ImVec4(0.85, 0.55, 0.2, 0.9))
-            if imgui.button(f"{name}##tool", imgui.ImVec2(75, 0)):
+            if imgui.button(f"{name}##tool", imgui.ImVec2(width, 0)):
                 ed.set_tool(name)
             record(self.app, f"tool:{name}")
             if active:

@@ -24,6 +24,7 @@ class Decor:
     hidden_springs: set = field(default_factory=set)    # spring ids drawn as plain lines (mouse joint)
     selected_joints: set = field(default_factory=set)   # joint ids
     hidden_joints: set = field(default_factory=set)     # joint ids the tools draw themselves (the mouse drag)
+    motor_pins: dict = field(default_factory=dict)      # joint id -> angle of the body its motor turns
     segments: list = field(default_factory=list)        # (p0, p1, width_px, rgba)
     points: list = field(default_factory=list)          # (p, radius_px, rgba)
     colors: dict = field(default_factory=dict)          # body id -> (r, g, b) chosen in the inspector

@@ -142,20 +142,29 @@ def joint_lines(rows, scale, selected=(), hidden=()):
     return thick_segments(p0, p1, width, col, scale)
 
 
-def joint_markers(rows, scale, selected=(), hidden=()):
-    """Disc vertices: pins, slider blocks, rod ends, wheel hubs (the circle shader)."""
+def joint_markers(rows, scale, selected=(), hidden=(), motors=None):
+    """Disc vertices: pins, slider blocks, rod ends, wheel hubs (the circle shader).  ``motors``:
+    {joint id: angle} of the hinges and wheels with a motor on: their pin or hub is drawn larger
+    with a spoke at that angle (the turning body's), so a motor reads as one and is seen turning."""
     rows = _visible(rows, hidden)
     if not len(rows):
         return np.zeros((0, 14), F32)
-    kind = rows["kind"]
+    kind, pa, pb = rows["kind"], rows["anchor_a"], rows["anchor_b"]
     col = _colors(rows, selected)
-    pin = np.isin(kind, [KIND["revolute"], KIND["prismatic"]])
+    dark = np.broadcast_to(JOINT_HUB, (len(rows), 4))
+    motors = motors or {}
+    motor = np.isin(rows["id"], np.fromiter(motors, np.int64, len(motors)))
+    wheel = kind == KIND["wheel"]
+    pin = np.isin(kind, [KIND["revolute"], KIND["prismatic"]]) & ~motor
     ends = np.isin(kind, [KIND["distance"], KIND["motor"], KIND["wheel"], KIND["weld"], KIND["mouse"]])
-    hub = kind == KIND["wheel"]
-    centers = np.concatenate([rows["anchor_a"][pin], rows["anchor_a"][ends], rows["anchor_b"][ends & ~hub],
-                              rows["anchor_b"][hub]])
-    radius = np.concatenate([np.full(pin.sum(), 5.5), np.full(ends.sum(), 3.0), np.full((ends & ~hub).sum(), 3.0),
-                             np.full(hub.sum(), 5.0)]) / scale
-    fill = np.concatenate([col[pin], col[ends], col[ends & ~hub], np.broadcast_to(JOINT_HUB, (hub.sum(), 4))])
-    line = np.concatenate([col[pin], col[ends], col[ends & ~hub], col[hub]])
-    return discs(centers, radius, np.zeros(len(centers)), 0.0, fill, line)
+    # (selection, centres, radius px, fill, spoke): plain markers first, the motors' spoked ones last
+    groups = [(pin, pa, 5.5, col), (ends, pa, 3.0, col), (ends & ~wheel, pb, 3.0, col),
+              (wheel & ~motor, pb, 5.0, dark), (motor, np.where(wheel[:, None], pb, pa), 7.5, dark)]
+    centers = np.concatenate([c[sel] for sel, c, _, _ in groups])
+    radius = np.concatenate([np.full(sel.sum(), r) for sel, _, r, _ in groups]) / scale
+    fill = np.concatenate([f[sel] for sel, _, _, f in groups])
+    line = np.concatenate([col[sel] for sel, _, _, _ in groups])
+    n_plain = len(centers) - int(motor.sum())
+    spoke = np.concatenate([np.zeros(n_plain), np.ones(motor.sum())])
+    angles = np.concatenate([np.zeros(n_plain), [motors[int(i)] for i in rows["id"][motor]]])
+    return discs(centers, radius, angles, spoke, fill, line)

@@ -142,7 +142,7 @@ class Renderer:
         """Joint pins and hubs, contact points, centres of mass and tool points as small discs."""
         mk = []
         if overlays.joints and rd.joints is not None and len(rd.joints):
-            mk.append(joint_markers(rd.joints, scale, decor.selected_joints, decor.hidden_joints))
+            mk.append(joint_markers(rd.joints, scale, decor.selected_joints, decor.hidden_joints, decor.motor_pins))
         if overlays.contacts and len(rd.contact_points):
             p = rd.contact_points
             mk.append(discs(p, np.full(len(p), 3.5 / scale), np.zeros(len(p)), 0.0, CONTACT_COLOR, CONTACT_COLOR))

@@ -17,8 +17,8 @@ MOUSE_FORCE_PER_KG = 1000.0
 class SelectTool(Tool):
     name = "select"
     snaps = False
-    help = "click: select a body, spring or joint (shift: add); drag empty space: box select; drag a " \
-           "body: pull it on a mouse joint (static: move it); handles: move / rotate the selection"
+    help = "click: select (shift: add); drag empty space: box select; drag a body: pull it on a " \
+           "mouse joint (static: move it); handles: move / rotate the selection"
 
     def __init__(self, editor):
         super().__init__(editor)

@@ -116,6 +116,11 @@ def test_each_joint_tool_draws_undoes_duplicates_and_saves(launch, tmp_path):
     app.click(*to_screen(st0, (-8.0, 4.3)))
     st = app.wait(lambda s: s["selected_joints"] == [by_tool["hinge"]["id"]], 10, "the hinge selected")
     assert "inspector:joint" in st["ui_rects"], "the inspector shows the joint"
+    app.key("Delete")                      # a selected joint is deleted alone; undo brings it back
+    st = app.wait(lambda s: s["n_joints"] == len(CASES) - 1, 10, "the hinge deleted")
+    assert st["n_bodies"] == len(st0["bodies"]) and by_tool["hinge"]["id"] not in {j["id"] for j in st["joints"]}
+    app.key("ctrl+z")
+    st = app.wait(lambda s: s["n_joints"] == len(CASES), 10, "the hinge back")
     # undo every creation (newest first), then redo them all
     app.key("Escape")
     for n in range(len(CASES) - 1, -1, -1):
