@@ -187,4 +187,9 @@ def test_joints_are_drawn_and_picked_where_they_are(editor):
     ed.tool.press((-3.8, 0.8), 1, 0)
     assert ed.selection == [hinge] and ed.tool.joint is None                  # the pin, not a drag
     d = ed.decor()
-    assert d.selected_joints == {hinge.id}
+    assert d.selected_joints == {hinge.id} and d.motor_pins == {}
+    motor = use(ed, "motor", (-4.4, 0.9))
+    d = ed.decor()
+    assert d.motor_pins == {motor.id: named(ed, "a").angle}
+    marks = joint_markers(ed.world.render_data().joints, 40.0, motors=d.motor_pins).reshape(-1, 6, 14)
+    assert marks[:, 0, 5].tolist().count(1.0) == 1              # one spoked disc: the motor's pin
