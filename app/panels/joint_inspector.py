@@ -1,6 +1,6 @@
 """The inspector's joint part: the joint's readouts (angle or translation or length, speed, motor
-torque/force, reaction force and torque of the last step) and every parameter of its kind,
-edited live through undoable commands.  The parameter list is physics/joint_params.py's, so a
+torque/force, reaction force and torque of the last step), every parameter of its kind and where
+it holds (anchor, axis), edited live through undoable commands.  The parameter list is physics/joint_params.py's, so a
 parameter the core adds shows up here without an edit."""
 from __future__ import annotations
 
@@ -94,6 +94,20 @@ def parameter(app, j, name, p):
         imgui.set_tooltip(p.doc)
 
 
+#: the geometry a kind lets the inspector move (world coordinates; the joint re-anchors there)
+GEOMETRY = {"revolute": ("anchor",), "weld": ("anchor",), "prismatic": ("anchor", "axis"),
+            "wheel": ("anchor", "axis"), "distance": ("anchor_a", "anchor_b")}
+
+
+def geometry(app, j):
+    """Where the joint holds (world point), and its axis: edited like the parameters."""
+    for name in GEOMETRY.get(j.kind, ()):
+        ch, v = imgui.input_float2(f"{name} (world)", list(getattr(j, name)), "%.4g", ENTER)
+        record(app, f"inspector:joint:{name}")
+        if ch:
+            app.editor.set_property(j, name, tuple(v))
+
+
 def common(app, j):
     """collide_connected, the break thresholds and the name: what every kind has."""
     ed = app.editor
@@ -129,4 +143,5 @@ def draw_joint(section, j):
     section.error()
     for name, p in jp.PARAMS[j.kind].items():
         parameter(app, j, name, p)
+    geometry(app, j)
     common(app, j)

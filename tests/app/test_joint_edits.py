@@ -113,6 +113,11 @@ def test_undo_redo_delete_and_edit_keep_every_parameter(editor):
     ed.undo()
     assert r.rest_length == rest
     assert not ed.set_property(r, "max_length", -1.0) and "max_length" in ed.edit_error
+    # geometry: the slider's axis turned and back (world coordinates, as the inspector edits it)
+    sl = use(ed, "slider", (-4.4, 0.2), (-4.4, 2.2))
+    assert ed.set_property(sl, "axis", (1.0, 0.0)) and sl.axis == pytest.approx((1.0, 0.0))
+    ed.undo()
+    assert sl.axis == pytest.approx((0.0, 1.0))
     # a joint deleted alone, and back
     ed.select(r)
     ed.delete_selection()
