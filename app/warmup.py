@@ -88,6 +88,7 @@ class Warmup:
         self.kernels0 = self.counter.n
         self.warmed: set[tuple[str, str, str]] = set()
         self.loaded: set[str] = set()           # units loaded (or compiled) in this process
+        self.failed: set[str] = set()           # units that raised here (the step then shows why)
         self._wanted_units: list[str] = []      # units the window waits for (a mode's joint stage)
         self.errors: list[str] = []
         self.label = "starting"
@@ -149,6 +150,7 @@ class Warmup:
                 compile_units.run(unit)
         except Exception as exc:  # noqa: BLE001  (a broken mode must not stop the others)
             self.errors.append(f"{unit}: {exc}")
+            self.failed.add(unit)
             traceback.print_exc()
         else:
             compile_units.mark(unit)
@@ -252,16 +254,19 @@ class Warmup:
             self._cv.notify_all()
 
     def want_unit(self, unit: str) -> None:
-        """Load ``unit`` next (from the cache, or compiled: by the helper if it has it queued)."""
+        """Load ``unit`` next: here (from the cache, or compiled), or after the helper if it is
+        compiling it now."""
         with self._cv:
-            if unit in self.loaded or unit in self._wanted_units:
+            if unit in self.loaded or unit in self.failed or unit in self._wanted_units:
                 return
             self._wanted_units.append(unit)
             self._cv.notify_all()
 
     def joints_ready(self, solver: str, integrator: str) -> bool:
-        """Is this mode's joint stage loaded here (a step with joints will not stop to compile)?"""
-        return compile_units.joints_unit(solver, integrator) in self.loaded
+        """Is this mode's joint stage loaded here (a step with joints will not stop to compile)?
+        A stage that failed to compile counts as ready: the step then reports the failure."""
+        unit = compile_units.joints_unit(solver, integrator)
+        return unit in self.loaded or unit in self.failed
 
     def can_step(self, solver: str, integrator: str, broadphase: str | None = None) -> bool:
         """Are the kernels of this mode loaded here (a step will not stop to compile)?"""
