@@ -18,59 +18,18 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
+sys.path.insert(0, str(HERE))
 
 from physics.scene import scene_from_dict, scene_to_dict, scene_metadata  # noqa: E402
 from physics.scene.atomic import write_atomic  # noqa: E402
 from physics.scene.json_io import dumps  # noqa: E402
 from physics.scene.schema import SCHEMA_FILE, schema_text  # noqa: E402
 
-DT = 1.0 / 60.0
-G = [0.0, -10.0]
+from scene_kit import DT, G, body, box, ground, poly, r, scene, spring, static  # noqa: E402,F401
+from joint_scenes import JOINT_SCENES  # noqa: E402
 
 
 # -- helpers ----------------------------------------------------------------
-def scene(name, description, bodies, springs=(), camera=None, **world):
-    return {"format": "stelkropp.scene", "version": 1, "name": name, "description": description,
-            "world": {"gravity": G, "dt": DT, "solver": "soft_step", "settings": {},
-                      "integrator": "symplectic_euler", "sleeping": True, **world},
-            "camera": camera or {"center": [0.0, 5.0], "zoom": 30.0},
-            "bodies": list(bodies), "springs": list(springs)}
-
-
-def body(shape, x, y, name=None, **kw):
-    b = {"shape": shape, "position": [r(x), r(y)], **kw}
-    if name:
-        b = {"name": name, **b}
-    return b
-
-
-def static(shape, x, y, name=None, **kw):
-    return body(shape, x, y, name, kind="static", **kw)
-
-
-def box(w, h):
-    return {"box": [r(w), r(h)]}
-
-
-def poly(points):
-    return {"polygon": [[r(x), r(y)] for x, y in points]}
-
-
-def spring(a, b, anchor_a, anchor_b, k, c=0.0, rest=None, name=None):
-    s = {"a": a, "b": b, "anchor_a": [r(v) for v in anchor_a], "anchor_b": [r(v) for v in anchor_b],
-         "stiffness": k, "damping": c}
-    if rest is not None:
-        s["rest_length"] = r(rest)
-    if name:
-        s = {"name": name, **s}
-    return s
-
-
-def r(x, digits=6):
-    """Round to micrometres: the files stay readable and nothing here needs more."""
-    return round(float(x), digits) + 0.0  # + 0.0 turns -0.0 into 0.0
-
-
 def domino(w, h, x, name, tip=0.0, **kw):
     """An upright box standing on y = 0 at x, or tipped forwards by ``tip`` radians about its
     bottom-right corner (past the tipping angle atan(w/h) it falls and starts the chain)."""
@@ -79,10 +38,6 @@ def domino(w, h, x, name, tip=0.0, **kw):
     cy = 0.5 * w * s + 0.5 * h * c
     extra = {"angle": r(-tip)} if tip else {}
     return body(box(w, h), cx, cy, name, **extra, **kw)
-
-
-def ground(width=40.0, name="ground", y=0.0, friction=0.6):
-    return static(box(width, 1.0), 0.0, y - 0.5, name, friction=friction)
 
 
 def pyramid_boxes(base, x0=0.0, y0=0.0, size=1.0, gap=0.05, prefix="b"):
@@ -348,38 +303,6 @@ def rain():
                  bodies, camera={"center": [0.0, 14.0], "zoom": 18.0})
 
 
-def car():
-    bodies, springs = [], []
-    # uneven ground: convex quads between points of a bumpy height profile
-    xs = [-20.0 + 2.0 * i for i in range(31)]
-    hs = [0.0 if abs(x + 14) < 4 else 0.35 * math.sin(0.9 * x) + 0.25 * math.sin(2.3 * x + 1.0) for x in xs]
-    for i in range(len(xs) - 1):
-        x0, x1, h0, h1 = xs[i], xs[i + 1], hs[i], hs[i + 1]
-        cx = 0.5 * (x0 + x1)
-        bodies.append(static(poly([(x0 - cx, -2.0), (x1 - cx, -2.0), (x1 - cx, h1), (x0 - cx, h0)]), cx, 0.0,
-                             f"ground{i}", friction=0.9))
-    cx, cy = -14.0, 1.6
-    bodies.append(body(box(3.0, 0.6), cx, cy, "chassis", density=2.0, velocity=[5.0, 0.0]))
-    bodies.append(body(box(1.2, 0.5), cx - 0.3, cy + 0.55, "cabin", density=0.5, velocity=[5.0, 0.0]))
-    # from the cabin's top corners to the chassis ends: no zero-length springs (no direction)
-    springs.append(spring("cabin", "chassis", [-0.6, 0.25], [-1.5, 0.3], 400.0, 4.0, name="cabin_rear"))
-    springs.append(spring("cabin", "chassis", [0.6, 0.25], [1.2, 0.3], 400.0, 4.0, name="cabin_front"))
-    springs.append(spring("cabin", "chassis", [-0.6, 0.25], [1.2, 0.3], 400.0, 4.0, name="cabin_brace"))
-    rad = 0.45
-    for side, dx in (("rear", -1.1), ("front", 1.1)):
-        wx, wy = cx + dx, cy - 1.0
-        bodies.append(body({"circle": rad}, wx, wy, f"wheel_{side}", friction=1.0, velocity=[5.0, 0.0],
-                           angular_velocity=r(-5.0 / rad)))
-        # a triangle of springs fixes the wheel centre to the chassis; anchored at the wheel's
-        # centre they exert no torque on it, so it spins freely
-        for j, ax in enumerate((dx - 0.7, dx, dx + 0.7)):
-            springs.append(spring(f"wheel_{side}", "chassis", [0.0, 0.0], [ax, -0.3], 250.0, 6.0,
-                                  name=f"suspension_{side}{j}"))
-    return scene("Car", "A chassis and cabin on two disc wheels, each held by a triangle of damped springs "
-                        "(the suspension), rolling at 5 m/s over uneven static ground.",
-                 bodies, springs, camera={"center": [-8.0, 2.0], "zoom": 40.0})
-
-
 def default():
     bodies, springs = [ground(60.0, friction=0.7)], []
     bodies.append(static(box(1.0, 4.0), -29.5, 2.0, "wall_left"))
@@ -431,7 +354,8 @@ SCENES = {
     "pyramid": pyramid, "pyramid_large": pyramid_large, "card_house": card_house, "arch": arch,
     "dominoes": dominoes, "friction_ramp": friction_ramp, "restitution_row": restitution_row,
     "spring_playground": spring_playground, "chain_bridge": chain_bridge, "soft_body": soft_body,
-    "mass_ratio": mass_ratio, "tumbler": tumbler, "rain": rain, "car": car, "default": default,
+    "mass_ratio": mass_ratio, "tumbler": tumbler, "rain": rain, "default": default,
+    **JOINT_SCENES,
 }
 
 
