@@ -70,7 +70,8 @@ class BenchScene:
     ``gen``: (generator name, kwargs) otherwise; ``error``: the metric the scene is judged by;
     ``full`` / ``quick``: run plans (steps, chunk, warm; ``quick`` None: not in the quick run);
     ``sweep``: every configuration (else defaults only); ``keep_world``: keep the file's gravity
-    and dt (only sleeping is turned off)."""
+    and dt (only sleeping is turned off); ``engines``: the only reference engines that model the
+    scene (None: every one; the joint scenes run in pymunk alone, bench/engines/pymunk_joints.py)."""
     title: str
     error: str
     full: dict
@@ -79,6 +80,7 @@ class BenchScene:
     file: str | None = None
     gen: tuple | None = None
     keep_world: bool = False
+    engines: tuple | None = None
 
 
 SCENES = {
@@ -93,6 +95,13 @@ SCENES = {
     "rain_mixed": BenchScene("scenes/rain.json: 1000 mixed convex shapes (defaults only)", "max_penetration",
                              dict(steps=480, chunk=30, warm=120), None, False, file="rain.json", keep_world=True),
 }
+# the shipped joint scenes (issue 14): defaults only, beside pymunk (the one reference with joints here)
+JOINT_BENCH = ("pendulum", "double_pendulum", "newtons_cradle", "hinge_bridge", "wrecking_ball", "piston",
+               "car", "ragdoll", "walker", "joint_grid")
+for _name in JOINT_BENCH:
+    SCENES[f"joints_{_name}"] = BenchScene(f"scenes/{_name}.json (joints)", "max_penetration",
+                                           dict(steps=300, chunk=20, warm=40), None, False, file=f"{_name}.json",
+                                           keep_world=True, engines=("pymunk",))
 ERROR_LABEL = {"top_drift": "top-box drift after the run (m)", "max_penetration": "max penetration at the end (m)"}
 
 

@@ -31,9 +31,16 @@ def speed_cases(key, configs, plan, engines=(), budget_s=None) -> list[SpeedCase
     sd = scene_data(key)
     if sd is None:
         return []
+    engines = scene_engines(key, engines)
     width = container_width(sd.desc) if key.startswith("rain") else None
     p = Plan(**plan)
     return [SpeedCase(sd, cfg, p, tuple(engines), budget_s, width) for cfg in configs]
+
+
+def scene_engines(key, engines) -> tuple:
+    """The engines of ``engines`` that model scene ``key`` (a joint scene: pymunk only)."""
+    only = SCENES[key].engines
+    return tuple(e for e in engines if only is None or e in only)
 
 
 def _base_row(case):
@@ -99,6 +106,7 @@ def speed_scene(key, configs, plan, engines=(), budget_s=None, progress=None):
     cases = speed_cases(key, configs, plan, engines, budget_s)
     if not cases:
         return [], None
+    engines = scene_engines(key, engines)
     rows, pooled = [], {e: {"chunks": [], "first": None, "metrics": None} for e in engines}
     for case in cases:
         if progress:

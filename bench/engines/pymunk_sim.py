@@ -20,6 +20,7 @@ import numpy as np
 
 from ..desc import spring_ends
 from .base import Sim
+from .pymunk_joints import add_joints
 
 PYMUNK_ITERATIONS = 10
 
@@ -74,6 +75,7 @@ class PymunkSim(Sim):
                 pb = bb.local_to_world(lbb)
                 rest = (pa - pb).length
             sp.add(pymunk.DampedSpring(ba, bb, la, lbb, float(rest), k, c))
+        add_joints(pymunk, sp, self.bodies, desc)  # the joint scenes' (bench/engines/pymunk_joints.py)
 
     def step(self):
         """One ``space.step(dt)``."""
