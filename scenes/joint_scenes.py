@@ -70,32 +70,55 @@ def newtons_cradle():
                  bodies, joints=joints, camera={"center": [0.0, 5.5], "zoom": 55.0})
 
 
+def _arc_pins(links, pitch, chord):
+    """Pins of a chain of ``links`` equal links of length ``pitch`` hung between two pins ``chord``
+    apart at height 0: on a circular arc (the links are its chords).  With 2 R sin(phi / 2) = pitch
+    and 2 R sin(links phi / 2) = chord, phi is found by bisection."""
+    lo, hi = 1e-9, 2.0 * math.pi / links
+    for _ in range(200):
+        phi = 0.5 * (lo + hi)
+        if math.sin(0.5 * links * phi) / math.sin(0.5 * phi) > chord / pitch:
+            lo = phi
+        else:
+            hi = phi
+    rad = 0.5 * pitch / math.sin(0.5 * phi)
+    cy = rad * math.cos(0.5 * links * phi)
+    return [(rad * math.sin((k - 0.5 * links) * phi), cy - rad * math.cos((k - 0.5 * links) * phi))
+            for k in range(links + 1)]
+
+
 def hinge_bridge():
-    """scenes/chain_bridge.json's towers, planks and crates, the planks joined by hinges in the
-    gaps between them instead of springs."""
-    planks, w, h = 16, 0.9, 0.2
-    span = planks * w + (planks + 1) * 0.1
+    """scenes/chain_bridge.json's planks and crates on hinges: 16 planks of 0.9 m, hinged 1 m
+    apart, hung with 1.5 % slack between two towers (a straight chain of rigid links cannot carry a
+    load: the tension it needs grows without bound as the sag goes to 0)."""
+    planks, w, h, y = 16, 0.9, 0.2, -0.1
+    chord = planks * 1.0 * 0.985
     bodies = [ground(40.0, y=-3.0),
-              static(box(1.0, 3.0), -0.5 * span - 0.5, -1.5, "tower_left"),
-              static(box(1.0, 3.0), 0.5 * span + 0.5, -1.5, "tower_right")]
-    x0 = -0.5 * span + 0.1 + 0.5 * w
+              static(box(1.0, 3.0), -0.5 * chord - 0.5, -1.5, "tower_left"),
+              static(box(1.0, 3.0), 0.5 * chord + 0.5, -1.5, "tower_right")]
+    pins = [(x, y + py) for x, py in _arc_pins(planks, 1.0, chord)]
+    # hinge friction (a motor at speed 0, 0.5 N m): the swaying dies out and the bridge sleeps
+    rub = dict(motor_speed=0.0, max_motor_torque=0.5)
+    joints = []
     for i in range(planks):
-        bodies.append(body(box(w, h), x0 + i * (w + 0.1), -0.1, f"plank{i}", density=2.0))
-    joints = [hinge("plank0", "tower_left", (-0.5 * span, -0.1), "anchor_left")]
-    for i in range(planks - 1):
-        x = x0 + i * (w + 0.1) + 0.5 * w + 0.05  # the middle of the gap
-        joints.append(hinge(f"plank{i + 1}", f"plank{i}", (x, -0.1), f"link{i}"))
-    joints.append(hinge(f"plank{planks - 1}", "tower_right", (0.5 * span, -0.1), "anchor_right"))
+        (x0, y0), (x1, y1) = pins[i], pins[i + 1]
+        bodies.append(body(box(w, h), 0.5 * (x0 + x1), 0.5 * (y0 + y1), f"plank{i}", density=2.0,
+                           angle=r(math.atan2(y1 - y0, x1 - x0))))
+        b = "tower_left" if i == 0 else f"plank{i - 1}"
+        joints.append(hinge(f"plank{i}", b, pins[i], "anchor_left" if i == 0 else f"link{i - 1}", **rub))
+    joints.append(hinge(f"plank{planks - 1}", "tower_right", pins[-1], "anchor_right", **rub))
     for k, x in enumerate((-3.0, -0.5, 2.5)):
         bodies.append(body(box(0.8, 0.8), x, 2.0 + k, f"crate{k}", density=0.5))
-    return scene("Hinge bridge", f"scenes/chain_bridge.json with hinges: {planks} planks joined by revolute "
-                                 "joints in the gaps between them and to the two towers, under the same three "
-                                 "crates.  The springs of the chain bridge stretch; the hinges hold the length.",
+    return scene("Hinge bridge", f"The chain bridge on hinges: {planks} planks on revolute joints 1 m apart, "
+                                 "hung between two towers with 1.5 % slack (a straight chain of rigid links "
+                                 "cannot carry a load), under the three crates of scenes/chain_bridge.json.  "
+                                 "The hinges have a little friction (0.5 N m): the bridge comes to rest and "
+                                 "sleeps.",
                  bodies, joints=joints, camera={"center": [0.0, 0.5], "zoom": 45.0})
 
 
 def wrecking_ball():
-    """A 0.75 m ball (density 4) on a chain of 14 hinged links, raised horizontal and let go into a
+    """A 0.75 m ball (density 1.5) on a chain of 14 hinged links, raised horizontal and let go into a
     wall of crates; a distance joint with max_length only (a rope) caps the chain's stretch, as
     Box2D's rope joint did."""
     top, links, lw = (0.0, 9.0), 14, 0.5
@@ -104,12 +127,13 @@ def wrecking_ball():
     prev = None
     for i in range(links):
         nm = f"link{i}"
-        bodies.append(body(box(lw, 0.125), top[0] - (i + 0.5) * lw, top[1], nm, density=2.0))
+        bodies.append(body(box(lw, 0.125), top[0] - (i + 0.5) * lw, top[1], nm, density=4.0))
         joints.append(hinge(nm, prev, (top[0] - i * lw, top[1]), f"hinge{i}"))
         prev = nm
     rad = 0.75
     end = top[0] - links * lw
-    bodies.append(body(circle(rad), end - rad, top[1], "ball", density=4.0))
+    # 2.65 kg on 0.25 kg links: a 1:10 mass ratio the iterative modes still hold together
+    bodies.append(body(circle(rad), end - rad, top[1], "ball", density=1.5))
     joints.append(hinge("ball", prev, (end, top[1]), "hook"))
     reach = links * lw + rad
     joints.append(joint("distance", "ball", None, "rope", anchor_a=(end - rad, top[1]), anchor_b=top,

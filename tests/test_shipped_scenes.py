@@ -2,8 +2,8 @@
 600 steps in every solver mode without non-finite values.  Also: the step models only what a
 scene requires (the spring stage comes and goes with springs; sleeping scenes cost almost nothing).
 
-The long runs -- the big scenes (rain: 1000 bodies, tumbler: 500, pyramid_large: 820) in every
-mode, and the explicit penalty/hybrid modes on the stacks (each over 10 s here) -- are marked
+The long runs -- the big scenes (rain: 1000 bodies, tumbler: 500, pyramid_large: 820, joint_grid:
+760 joints) in every mode, and the explicit penalty/hybrid modes on the stacks (each over 10 s here) -- are marked
 ``slow``: a plain ``pytest`` leaves them out, ``.ci/run`` runs them (``-m slow``), always the full
 600 steps.
 """
@@ -24,9 +24,12 @@ from test_scene import assert_same_world
 ROOT = Path(__file__).resolve().parent.parent
 SCENE_DIR = ROOT / "scenes"
 SCENES = sorted(p.stem for p in SCENE_DIR.glob("*.json") if p.name != "stelkropp.schema.json")
-BIG = {"rain", "tumbler", "pyramid_large"}
+BIG = {"rain", "tumbler", "pyramid_large", "joint_grid"}  # joint_grid: 400 discs, 760 joints, ~40 s in soft_step
 EXPECTED = {"pyramid", "pyramid_large", "card_house", "arch", "dominoes", "friction_ramp", "restitution_row",
-            "spring_playground", "chain_bridge", "soft_body", "mass_ratio", "tumbler", "rain", "car", "default"}
+            "spring_playground", "chain_bridge", "soft_body", "mass_ratio", "tumbler", "rain", "car", "default",
+            # issue 14's joint scenes (tests/test_joint_scenes.py: what they do)
+            "pendulum", "double_pendulum", "newtons_cradle", "hinge_bridge", "ragdoll", "piston", "wrecking_ball",
+            "walker", "joint_grid"}
 STEPS = 600
 
 
@@ -118,8 +121,17 @@ def test_big_scenes_have_their_body_counts():
 
 
 def test_spring_scenes_have_springs():
-    for name in ("spring_playground", "chain_bridge", "soft_body", "car"):
+    for name in ("spring_playground", "chain_bridge", "soft_body"):
         assert load_scene(path(name)).springs, name
+
+
+def test_car_runs_on_wheel_joints_with_a_motor():
+    # issue 14: the default car has two wheel joints and a motor (the spring axles are gone)
+    w = load_scene(path("car"))
+    wheels = [j for j in w.joints if j.kind == "wheel"]
+    assert len(wheels) == 2 and not w.springs
+    assert sum(j.max_motor_torque > 0 and j.motor_speed != 0 for j in wheels) == 1
+    assert all(j.spring_hertz > 0 for j in wheels)
 
 
 def test_default_scene_is_inviting():
