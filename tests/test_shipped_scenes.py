@@ -2,8 +2,8 @@
 600 steps in every solver mode without non-finite values.  Also: the step models only what a
 scene requires (the spring stage comes and goes with springs; sleeping scenes cost almost nothing).
 
-The long runs -- the big scenes (rain: 1000 bodies, tumbler: 500, pyramid_large: 820, joint_grid:
-760 joints) in every mode, and the explicit penalty/hybrid modes on the stacks (each over 10 s here) -- are marked
+The long runs -- the big scenes (rain: 1000 bodies, tumbler: 500, pyramid_large: 820) in every
+mode, and the explicit penalty/hybrid modes on the stacks (each over 10 s here) -- are marked
 ``slow``: a plain ``pytest`` leaves them out, ``.ci/run`` runs them (``-m slow``), always the full
 600 steps.
 """
@@ -24,7 +24,7 @@ from test_scene import assert_same_world
 ROOT = Path(__file__).resolve().parent.parent
 SCENE_DIR = ROOT / "scenes"
 SCENES = sorted(p.stem for p in SCENE_DIR.glob("*.json") if p.name != "stelkropp.schema.json")
-BIG = {"rain", "tumbler", "pyramid_large", "joint_grid"}  # joint_grid: 400 discs, 760 joints, ~40 s in soft_step
+BIG = {"rain", "tumbler", "pyramid_large"}
 EXPECTED = {"pyramid", "pyramid_large", "card_house", "arch", "dominoes", "friction_ramp", "restitution_row",
             "spring_playground", "chain_bridge", "soft_body", "mass_ratio", "tumbler", "rain", "car", "default",
             # issue 14's joint scenes (tests/test_joint_scenes.py: what they do)
