@@ -58,7 +58,7 @@ def car():
                         "5 Hz front, damping ratio 0.7, 0.25 m travel each way), the rear wheel driven by a "
                         "motor (12 rad/s, up to 25 N m), over rolling hills of convex static quads.  Edit the "
                         "motor speed in the inspector to brake or reverse.",
-                 bodies, joints=joints, camera={"center": [-10.0, 2.0], "zoom": 40.0})
+                 bodies, joints=joints, camera={"center": [-10.0, 0.5], "zoom": 40.0})
 
 
 # -- the ragdoll -------------------------------------------------------------------------------
@@ -125,7 +125,7 @@ def ragdoll():
                             "size): eleven boxes and a head on revolute joints with angle limits and joint "
                             "friction (a motor with speed 0 and a small max torque), dropped onto a flight of "
                             "steps.",
-                 bodies, joints=joints, camera={"center": [-1.0, 4.0], "zoom": 40.0})
+                 bodies, joints=joints, camera={"center": [-1.0, 1.0], "zoom": 40.0})
 
 
 # -- the Theo Jansen walker ------------------------------------------------------------------------

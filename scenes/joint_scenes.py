@@ -31,7 +31,7 @@ def pendulum():
                              "joint, released at 30 degrees.  A rod of length L swings with period "
                              "2 pi sqrt(2L / 3g) (1.62, 2.29, 2.81 s here, a few percent more at this "
                              "amplitude); the disc like a point pendulum, 2 pi sqrt(L / g) = 2.81 s.",
-                 bodies, joints=joints, camera={"center": [-0.5, 6.0], "zoom": 45.0})
+                 bodies, joints=joints, camera={"center": [-0.5, 5.5], "zoom": 45.0})
 
 
 def double_pendulum():
@@ -49,7 +49,7 @@ def double_pendulum():
     return scene("Double pendulum", "Two frictionless double pendulums (two 1 m rods on hinges each) released "
                                     "horizontal, the right one 0.001 rad lower.  They follow each other for a "
                                     "few seconds and then part: the double pendulum is chaotic.",
-                 bodies, joints=joints, camera={"center": [0.0, 6.0], "zoom": 55.0})
+                 bodies, joints=joints, camera={"center": [0.0, 5.0], "zoom": 55.0})
 
 
 def newtons_cradle():
@@ -67,7 +67,7 @@ def newtons_cradle():
     return scene("Newton's cradle", "Five touching balls (restitution 1, no friction) on rigid 4 m distance "
                                     "joints; the first is released from 50 degrees.  Momentum and energy pass "
                                     "through the row: how cleanly depends on the solver mode.",
-                 bodies, joints=joints, camera={"center": [0.0, 5.5], "zoom": 55.0})
+                 bodies, joints=joints, camera={"center": [0.0, 4.5], "zoom": 55.0})
 
 
 def _arc_pins(links, pitch, chord):
@@ -114,7 +114,7 @@ def hinge_bridge():
                                  "cannot carry a load), under the three crates of scenes/chain_bridge.json.  "
                                  "The hinges have a little friction (0.5 N m): the bridge comes to rest and "
                                  "sleeps.",
-                 bodies, joints=joints, camera={"center": [0.0, 0.5], "zoom": 45.0})
+                 bodies, joints=joints, camera={"center": [0.0, -1.0], "zoom": 45.0})
 
 
 def wrecking_ball():
@@ -145,7 +145,7 @@ def wrecking_ball():
     return scene("Wrecking ball", "A heavy ball on a chain of 14 hinged links swings from horizontal into a wall of "
                                   "24 crates.  A rope (a distance joint with only max_length) from the pivot to "
                                   "the ball keeps the chain from stretching past its length.",
-                 bodies, joints=joints, camera={"center": [-1.0, 4.5], "zoom": 38.0})
+                 bodies, joints=joints, camera={"center": [-1.0, 1.5], "zoom": 38.0})
 
 
 def piston():
@@ -167,7 +167,7 @@ def piston():
     return scene("Piston", "A crank-slider: a motor hinge turns a disc at 1 rad/s (up to 2000 N m), a 4 m "
                            "connecting rod on a pin 0.8 m off-centre drives a piston on a vertical prismatic "
                            "joint (1.6 m stroke, limits just outside it), and two crates ride on top.",
-                 bodies, joints=joints, camera={"center": [0.0, 4.5], "zoom": 50.0})
+                 bodies, joints=joints, camera={"center": [0.0, 2.5], "zoom": 50.0})
 
 
 def joint_grid(n=20):
@@ -191,7 +191,7 @@ def joint_grid(n=20):
                                    f"(radius 0.4 m, 1 m apart) hinged to their neighbours, {len(joints)} "
                                    "revolute joints, hanging from seven static discs in the top row.  Sleeping "
                                    "is off, as in the benchmark.",
-                 bodies, joints=joints, camera={"center": [0.0, 0.5 * n], "zoom": 600.0 / (n * 1.6)},
+                 bodies, joints=joints, camera={"center": [0.0, 0.6 * n], "zoom": 600.0 / (n * 1.6)},
                  sleeping=False)
 
 
