@@ -9,12 +9,16 @@
 from . import _jit  # noqa: F401  (configures numba's cache before any kernel is defined)
 from .body import Body
 from .errors import SceneError, SimulationError
+from .fixture import Fixture
+from .geometry.capsule import Capsule, Segment
+from .geometry.chain import Chain, ChainSegment
+from .geometry.decompose import decompose
 from .geometry.shapes import Circle, Polygon
 from .joint import Joint
 from .spring import Spring
 from .world import World
 
-__all__ = ["World", "Body", "Spring", "Joint", "Polygon", "Circle", "SceneError", "SimulationError",
+__all__ = ["World", "Body", "Fixture", "Spring", "Joint", "Polygon", "Circle", "Capsule", "Segment", "Chain", "ChainSegment", "decompose", "SceneError", "SimulationError",
            "load_scene", "save_scene", "solvers_available", "tune"]
 
 

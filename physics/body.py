@@ -16,27 +16,58 @@ from .validate import checked_density, finite_num, finite_vec, friction_pair, sh
 
 
 class Body:
-    """Handle of one rigid body in a :class:`~physics.World`."""
+    """Handle of one rigid body in a :class:`~physics.World`: a rigid set of fixtures (shapes).
 
-    __slots__ = ("_world", "_id", "_shape")
+    The material properties (``density``, ``friction``, ``restitution``) of a body with
+    several fixtures read the first fixture's value; assigning one sets every fixture's.
+    """
 
-    def __init__(self, world, oid: int, shape):
+    __slots__ = ("_world", "_id", "_fixtures")
+
+    def __init__(self, world, oid: int):
         self._world = world
         self._id = oid
-        self._shape = shape
+        self._fixtures = []
 
     @property
     def shape(self):
-        """The body's shape (read-only: :meth:`set_shape` replaces it and updates mass and geometry)."""
-        return self._shape
+        """The body's first shape (read-only: :meth:`set_shape` replaces the shapes and updates
+        mass and geometry; :attr:`fixtures` lists them all)."""
+        return self._fixtures[0].shape
+
+    @property
+    def fixtures(self) -> list:
+        """The body's fixtures (physics.Fixture), in the order they were added (a new list each call)."""
+        return list(self._fixtures)
+
+    def add_fixture(self, shape, density=None, friction=None, restitution=None, category=1,
+                    mask=(1 << 64) - 1, group=0, name=None):
+        """Attach one more shape; returns its physics.Fixture.
+
+        Material defaults to the first fixture's; ``category``/``mask`` are filter bits
+        (0 .. 2^64 - 1), ``group`` a whole number (see physics.Fixture).  Mass, centre of mass
+        and inertia follow; the body origin stays.  ValueError naming the bad field."""
+        return self._world._add_fixture(self, shape, density, friction, restitution, category, mask, group, name)
+
+    def remove_fixture(self, fixture) -> None:
+        """Detach ``fixture``; mass, centre of mass and inertia follow.  ValueError for a fixture
+        of another body, the last fixture, or one whose removal leaves a dynamic body no area."""
+        self._world._remove_fixture(self, fixture)
 
     def set_shape(self, shape) -> None:
-        """Replace the shape, keeping the body origin, angle, velocity, density and material.
+        """Replace the shapes by one, keeping the body origin, angle, velocity, density and material.
 
         Mass, centre of mass, inertia and the collision geometry follow the new
         shape; ValueError (nothing changed) for a non-shape or a density this
         shape cannot carry."""
         self._world._replace_shape(self, shape)
+
+    def _set_all(self, field: str, value) -> None:
+        F = self._world._store.fixtures.view
+        arr = getattr(F, field)
+        for fx in self._fixtures:
+            arr[fx._f] = value
+        self._world._mirror(self)
 
     # -- plumbing ------------------------------------------------------
     @property
@@ -144,8 +175,9 @@ class Body:
 
     @density.setter
     def density(self, value):
-        d = checked_density(value, self.shape)
-        self._world._set_mass(self._s, self.shape, d)
+        d = [checked_density(value, fx.shape) for fx in self._fixtures][0]
+        self._set_all("density", d)
+        self._world._place_body(self)
         self._world._touched(self._s)
 
     @property
@@ -158,8 +190,9 @@ class Body:
         if not isinstance(value, str) or value not in KINDS:
             raise ValueError(f"kind: must be one of {list(KINDS)}, got {shown(value)}")
         s = self._s
+        self._world._check_mass(KINDS[value], [fx.shape for fx in self._fixtures], None)
         self._B.kind[s] = KINDS[value]
-        self._world._set_mass(s, self.shape, float(self._B.density[s]))
+        self._world._place_body(self)
         if value == "static":  # a static body never moves
             self._B.v[s] = 0.0
             self._B.w[s] = 0.0
@@ -172,7 +205,7 @@ class Body:
 
     @restitution.setter
     def restitution(self, value):
-        self._B.e[self._s] = finite_num(value, "restitution", lo=0.0, hi=1.0)
+        self._set_all("e", finite_num(value, "restitution", lo=0.0, hi=1.0))
 
     @property
     def friction(self) -> tuple[float, float]:
@@ -182,9 +215,10 @@ class Body:
 
     @friction.setter
     def friction(self, value):
-        s = self._s
-        self._B.mu_s[s], self._B.mu_d[s] = friction_pair(value)
-        self._world._touched(s)
+        mu_s, mu_d = friction_pair(value)
+        self._set_all("mu_s", mu_s)
+        self._set_all("mu_d", mu_d)
+        self._world._touched(self._s)
 
     @property
     def static_friction(self) -> float:
@@ -193,7 +227,7 @@ class Body:
 
     @static_friction.setter
     def static_friction(self, value):
-        self._B.mu_s[self._s] = finite_num(value, "static_friction", lo=0.0)
+        self._set_all("mu_s", finite_num(value, "static_friction", lo=0.0))
 
     @property
     def dynamic_friction(self) -> float:
@@ -202,7 +236,7 @@ class Body:
 
     @dynamic_friction.setter
     def dynamic_friction(self, value):
-        self._B.mu_d[self._s] = finite_num(value, "dynamic_friction", lo=0.0)
+        self._set_all("mu_d", finite_num(value, "dynamic_friction", lo=0.0))
 
     @property
     def name(self):
@@ -273,7 +307,7 @@ class Body:
         self._world._touched(s)
 
     def world_vertices(self) -> np.ndarray:
-        """Polygon vertices in world coordinates (empty for circles)."""
+        """The first shape's polygon (or capsule/segment core) vertices in world coordinates (empty for circles)."""
         verts = getattr(self.shape, "vertices", None)
         if verts is None:
             return np.zeros((0, 2))

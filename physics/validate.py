@@ -99,10 +99,13 @@ DENSITY_MIN, DENSITY_MAX = 1e-6, 1e9
 
 
 def checked_density(value, shape, field: str = "density") -> float:
-    """A density that gives ``shape`` a finite, positive mass and inertia, or ValueError naming ``field``."""
+    """A density that gives ``shape`` a finite, positive mass and inertia, or ValueError naming ``field``
+    (a shape without area, a segment, has no mass whatever its density: only the range is checked)."""
     d = finite_num(value, field, lo=0.0, lo_open=True)
     if not DENSITY_MIN <= d <= DENSITY_MAX:
         raise ValueError(f"{field}: must be between {DENSITY_MIN:g} and {DENSITY_MAX:g} kg/m^2, got {shown(value)}")
+    if getattr(shape, "area", None) == 0.0:
+        return d
     m, _, inertia = shape.mass_properties(d)
     ok = all(math.isfinite(x) and x > 0.0 and math.isfinite(1.0 / x) for x in (m, inertia))
     if not ok:

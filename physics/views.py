@@ -11,11 +11,17 @@ from .store.joints import BROKEN
 STATE_DTYPE = np.dtype([("id", np.int64), ("position", np.float64, (2,)), ("angle", np.float64),
                         ("velocity", np.float64, (2,)), ("angular_velocity", np.float64), ("awake", np.bool_)])
 
-Contact = namedtuple("Contact", "body_a body_b points normal depth")
+Contact = namedtuple("Contact", "body_a body_b points normal depth fixture_a fixture_b", defaults=(None, None))
 RenderData = namedtuple(
     "RenderData",
     "vertices vstart vcount kind awake shape radius center angle com ids aabb "
-    "spring_ends contact_points contact_normals joints", defaults=(None,))
+    "spring_ends contact_points contact_normals joints fixtures", defaults=(None, None))
+
+#: one row per fixture for drawing (RenderData.fixtures): its id, body slot, shape code
+#: (store/fixtures.py), radius, core vertices in RenderData.vertices (vstart, vcount) and a
+#: circle's world centre
+FIXTURE_DRAW_DTYPE = np.dtype([("id", np.int64), ("body", np.int32), ("shape", np.int8), ("radius", np.float64),
+                               ("vstart", np.int32), ("vcount", np.int32), ("center", np.float64, (2,))])
 
 #: one row per joint for drawing (RenderData.joints): its id and kind code (store/joints.py
 #: JOINT_KINDS), world anchors on a and b (b's is the world point for a world joint), the axis
@@ -49,35 +55,57 @@ def contacts(world) -> list:
     c = world._store.contacts
     out = []
     ids = world._store.bodies.view.id
+    fixtures = world._fixture_handles
     for k in range(c.n):
         m = int(c.cur.count[k])
         keep = [p for p in range(m) if c.cur.depth[k, p] > -world.linear_slop]
         if not keep:
             continue
+        key = int(c.cur.key[k])  # (fixture id a << 32) | fixture id b (narrowphase/kernel.py)
         out.append(Contact(world._handles[int(ids[c.cur.a[k]])], world._handles[int(ids[c.cur.b[k]])],
                            [tuple(map(float, c.cur.point[k, p])) for p in keep],
                            tuple(map(float, c.cur.normal[k])),
-                           max(float(c.cur.depth[k, p]) for p in keep)))
+                           max(float(c.cur.depth[k, p]) for p in keep),
+                           fixtures.get(key >> 32), fixtures.get(key & 0xFFFFFFFF)))
     return out
 
 
 def query_point(world, p):
-    """The topmost (last added) body containing world point ``p``, or None."""
-    n = world._store.bodies.n
-    B = world._store.bodies.view
+    """The topmost (last added) body one of whose fixtures contains world point ``p``, or None."""
+    st = world._store
+    B = st.bodies.view
+    F = st.fixtures.view
     world._pipeline.refresh_geometry(world)
-    box = B.aabb[:n]
+    box = F.aabb[: st.fixtures.n]
     cand = np.nonzero((box[:, 0] <= p[0]) & (p[0] <= box[:, 2]) & (box[:, 1] <= p[1]) & (p[1] <= box[:, 3]))[0]
-    V = world._store.verts.view
-    for s in cand[::-1]:
-        if B.shape[s] == CIRCLE:
-            if np.hypot(*(p - B.x[s])) <= B.radius[s]:
-                return world._handles[int(B.id[s])]
+    V = st.verts.view
+    best = None
+    for f in cand:
+        s = int(F.body[f])
+        if best is not None and s < best:
             continue
-        a, k = int(B.vstart[s]), int(B.vcount[s])
-        if np.all(np.einsum("ij,ij->i", p - V.world[a:a + k], V.wnormal[a:a + k]) <= 0):
-            return world._handles[int(B.id[s])]
-    return None
+        if _contains(F, V, f, p):
+            best = s
+    return None if best is None else world._handles[int(B.id[best])]
+
+
+def _contains(F, V, f, p) -> bool:
+    """Is world point ``p`` inside fixture f (a rounded core reaches its radius further)?"""
+    r = float(F.radius[f])
+    if F.shape[f] == CIRCLE:
+        return bool(np.hypot(*(p - F.wcenter[f])) <= r)
+    a, k = int(F.vstart[f]), int(F.vcount[f])
+    pts = V.world[a:a + k]
+    if k >= 3 and np.all(np.einsum("ij,ij->i", p - pts, V.wnormal[a:a + k]) <= 0):
+        return True
+    if r <= 0.0:
+        return False
+    for i in range(k):  # within r of an edge of the core
+        e = pts[(i + 1) % k] - pts[i]
+        t = np.clip(np.dot(p - pts[i], e) / max(np.dot(e, e), 1e-300), 0.0, 1.0)
+        if np.hypot(*(p - pts[i] - t * e)) <= r:
+            return True
+    return False
 
 
 def render_data(world) -> RenderData:
@@ -102,7 +130,18 @@ def render_data(world) -> RenderData:
     nrm = np.repeat(c.cur.normal[: c.n], cnt, axis=0)
     return RenderData(V.world[: st.verts.top], B.vstart[:n], B.vcount[:n], B.kind[:n], B.awake[:n],
                       B.shape[:n], B.radius[:n], B.x[:n], B.q[:n], B.com[:n], B.id[:n], B.aabb[:n],
-                      ends, pts, nrm, joint_rows(st))
+                      ends, pts, nrm, joint_rows(st), fixture_rows(st))
+
+
+def fixture_rows(st) -> np.ndarray:
+    """RenderData.fixtures (FIXTURE_DRAW_DTYPE) for the store's fixtures."""
+    nf = st.fixtures.n
+    F = st.fixtures.view
+    out = np.zeros(nf, FIXTURE_DRAW_DTYPE)
+    for name in ("id", "body", "shape", "radius", "vstart", "vcount"):
+        out[name] = getattr(F, name)[:nf]
+    out["center"] = F.wcenter[:nf]
+    return out
 
 
 def joint_rows(st) -> np.ndarray:

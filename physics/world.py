@@ -19,6 +19,7 @@ from .collision.broadphase.limit import MAX_PAIRS
 from .validate import finite_num, finite_vec, flag, whole
 from .views import STATE_DTYPE, Contact, RenderData
 from .world_bodies import BodiesMixin
+from .world_fixtures import FixturesMixin
 from .world_joints import JointsMixin
 from .world_springs import SpringsMixin
 
@@ -41,7 +42,7 @@ def _tolerance(field: str, doc: str = ""):
     return property(get, put, doc=doc)
 
 
-class World(JointsMixin, BodiesMixin, SpringsMixin):
+class World(JointsMixin, BodiesMixin, FixturesMixin, SpringsMixin):
     """A 2D rigid-body world.
 
     ``World(gravity=(0, -9.81), dt=1/60, solver="soft_step")``; add bodies with
@@ -68,6 +69,7 @@ class World(JointsMixin, BodiesMixin, SpringsMixin):
                  settings: dict | None = None):
         self._store = Store()
         self._handles: dict[int, Body] = {}
+        self._fixture_handles = {}
         self._spring_handles: dict[int, Spring] = {}
         self._body_names = Names("body")
         self._spring_names = Names("spring")

@@ -1,34 +1,38 @@
 """World's bodies: adding, reshaping and removing them, names, waking (a part of World)."""
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from .body import Body
-from .geometry.shapes import Circle, Polygon, Shape
 from .spring import Spring
-from .store import CIRCLE, DYNAMIC, KINDS, POLYGON, STATIC
+from .store import KINDS, STATIC
 from .validate import checked_density, finite_num, finite_vec, friction_pair, shown
+from .world_fixtures import shape_code, shape_list
 
 
 class BodiesMixin:
     """The body half of :class:`~physics.World` (see world.py for the state it uses)."""
 
     # -- bodies -----------------------------------------------------------
-    def add_body(self, shape: Shape, kind: str = "dynamic", position=(0.0, 0.0), angle: float = 0.0,
+    def add_body(self, shape, kind: str = "dynamic", position=(0.0, 0.0), angle: float = 0.0,
                  velocity=(0.0, 0.0), angular_velocity: float = 0.0, density: float = 1.0,
                  restitution: float = 0.0, friction=0.6, name: str | None = None) -> Body:
-        """Add a body; every argument is validated and a ValueError names the bad field."""
-        if not isinstance(shape, Shape):
-            raise ValueError(f"shape: expected a physics.Polygon or physics.Circle, got {type(shape).__name__}")
+        """Add a body made of one shape or a list of shapes (one fixture each).
+
+        ``density``, ``restitution`` and ``friction`` apply to every fixture this creates;
+        mass, centre of mass and inertia are the sums over the fixtures (parallel axes).
+        Every argument is validated and a ValueError names the bad field (a dynamic body of
+        segments only has no area: refused)."""
+        shapes = shape_list(shape)
         if not isinstance(kind, str) or kind not in KINDS:
             raise ValueError(f"kind: must be one of {list(KINDS)}, got {shown(kind)}")
         pos = finite_vec(position, "position")
         ang = finite_num(angle, "angle")
         vel = finite_vec(velocity, "velocity")
         avel = finite_num(angular_velocity, "angular_velocity")
-        dens = checked_density(density, shape)  # before the slot is taken: a refused add leaves nothing
+        # before the slot is taken: a refused add leaves nothing
+        dens = [checked_density(density, sh) for sh in shapes][0]
+        self._check_mass(KINDS[kind], shapes, dens)
         rest = finite_num(restitution, "restitution", lo=0.0, hi=1.0)
         mu_s, mu_d = friction_pair(friction)
         if name is not None:
@@ -37,74 +41,44 @@ class BodiesMixin:
         B = self._bodies.view
         B.kind[s] = KINDS[kind]
         B.q[s] = ang
-        B.e[s] = rest
-        B.mu_s[s], B.mu_d[s] = mu_s, mu_d
         B.island[s] = -1
         B.awake[s] = 1
-        self._set_shape(s, shape)
-        self._set_mass(s, shape, dens)
-        c, sn = math.cos(ang), math.sin(ang)
-        com = B.com[s]
-        B.x[s] = pos + (c * com[0] - sn * com[1], sn * com[0] + c * com[1])
+        h = Body(self, oid)
+        h._fixtures = [self._new_fixture(h, sh, dens, rest, mu_s, mu_d) for sh in shapes]
+        self._place_body(h, pos)
         if B.kind[s] != STATIC:
             B.v[s] = vel
             B.w[s] = avel
-        h = Body(self, oid, shape)
         self._handles[oid] = h
         self._body_names.add(oid, name)
         self._pipeline.invalidate()
         return h
 
-    def _set_shape(self, s: int, shape: Shape) -> None:
-        B = self._bodies.view
-        if isinstance(shape, Circle):
-            B.shape[s] = CIRCLE
-            B.radius[s] = shape.radius
-            B.vcount[s] = 0
-            B.com[s] = shape.offset
-        elif isinstance(shape, Polygon):
-            c = shape.centroid
-            B.shape[s] = POLYGON
-            B.radius[s] = 0.0
-            B.vstart[s] = self._verts.add(shape.vertices - c)
-            B.vcount[s] = len(shape.vertices)
-            B.com[s] = c
-        else:
-            raise ValueError(f"shape: unsupported shape type {type(shape).__name__}")
-        B.bound_r[s] = shape.bounding_radius
-
-    def _set_mass(self, s: int, shape: Shape, density: float) -> None:
-        B = self._bodies.view
-        m, _, inertia = shape.mass_properties(density)
-        B.density[s] = density
-        B.m[s] = m
-        B.inertia[s] = inertia
-        dyn = B.kind[s] == DYNAMIC
-        B.inv_m[s] = 1.0 / m if dyn and m > 0 else 0.0
-        B.inv_i[s] = 1.0 / inertia if dyn and inertia > 0 else 0.0
-
     def _replace_shape(self, body: Body, shape) -> None:
-        """Body.set_shape: new geometry and mass about the same origin (validated first)."""
-        if not isinstance(shape, Shape):
-            raise ValueError(f"shape: expected a physics.Polygon or physics.Circle, got {type(shape).__name__}")
+        """Body.set_shape: one fixture of new geometry (the first fixture's id, material and
+        filter) and the mass about the same origin (validated first)."""
+        shapes = shape_list(shape)
+        if len(shapes) != 1:
+            raise ValueError("shape: set_shape takes one shape (add_fixture adds more)")
+        first = body._fixtures[0]
         s = body._s
-        B = self._bodies.view
-        dens = checked_density(float(B.density[s]), shape)
+        dens = checked_density(first.density, shape)
+        self._check_mass(int(self._bodies.view.kind[s]), shapes, dens)
         origin = np.array(body.position)
-        if B.shape[s] == POLYGON:
-            self._verts.release(int(B.vcount[s]))
         self._touch_neighbours(s)
-        self._set_shape(s, shape)
-        self._set_mass(s, shape, dens)
-        body._shape = shape
-        q = B.q[s]
-        c, sn = math.cos(q), math.sin(q)
-        com = B.com[s]
-        B.x[s] = origin + (c * com[0] - sn * com[1], sn * com[0] + c * com[1])
+        for fx in body._fixtures[1:]:
+            self._drop_fixture_row(fx)
+        F = self._store.fixtures.view
+        f = first._f
+        F.shape[f] = shape_code(shape)
+        F.radius[f] = shape.radius
+        first._shape = shape
+        body._fixtures = [first]
+        self._place_body(body, origin)
         self._touched(s)
 
     def remove(self, item) -> None:
-        """Remove a body (and the springs attached to it) or a spring."""
+        """Remove a body (its fixtures and the springs attached to it) or a spring."""
         if isinstance(item, Spring):
             self._remove_spring(item)
             return
@@ -115,9 +89,10 @@ class BodiesMixin:
             self._remove_spring(sp)
         s = item._s
         self._touch_neighbours(s)
-        if self._bodies.view.shape[s] == POLYGON:
-            self._verts.release(int(self._bodies.view.vcount[s]))
+        for fx in item._fixtures:
+            self._drop_fixture_row(fx)
         removed, last = self._bodies.remove(item.id)
+        self._store.fixtures.remap_removed_body(removed, last)
         S = self._springs.view
         ns = self._springs.n
         S.a[:ns][S.a[:ns] == last] = removed
@@ -126,7 +101,10 @@ class BodiesMixin:
         del self._handles[item.id]
         self._body_names.drop(item.id)
         if self._verts.needs_compaction():
-            self._verts.compact(self._bodies.view.vstart, self._bodies.view.vcount, self._bodies.n)
+            F = self._store.fixtures.view
+            self._verts.compact(F.vstart, F.vcount, self._store.fixtures.n)
+            for h in self._handles.values():
+                self._mirror(h)
         self._pipeline.invalidate()
 
     def body(self, name: str) -> Body:

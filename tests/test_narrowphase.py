@@ -1,7 +1,8 @@
 """The whole narrow-phase pass (``physics.collision.narrowphase.collide``) on hand-built states.
 
-States are filled by hand (Table + VertexPool + update_geometry) so these
-tests depend only on the store layout, not on the World class.
+States are filled by hand (Table + FixtureTable + VertexPool + update_geometry) so these
+tests depend only on the store layout, not on the World class (one fixture per body: the
+fixture slots are the body slots).
 """
 import math
 
@@ -16,7 +17,8 @@ from physics.store import CARRIED, ContactBuffer
 from physics.geometry.transform import update_geometry
 from physics.collision.narrowphase import collide
 from physics.geometry.shapes import Polygon
-from physics.store import BODY_FIELDS, CIRCLE, POLYGON, STATIC, Bodies, Table, VertexPool
+from physics.store import BODY_FIELDS, CIRCLE, POLYGON, STATIC, Bodies, FixtureTable, Table, VertexPool
+from physics.store.fixtures import ALL_BITS
 
 DT, SPEC = 1 / 60, 0.02
 
@@ -26,6 +28,7 @@ class State:
 
     def __init__(self):
         self.bodies = Table(BODY_FIELDS, Bodies)
+        self.fixtures = FixtureTable()
         self.verts = VertexPool()
         self.contacts = ContactBuffer(cap=4)
 
@@ -43,6 +46,12 @@ class State:
         a["x"][s], a["q"][s], a["v"][s], a["w"][s] = pos, angle, vel, w
         a["e"][s], a["mu_s"][s], a["mu_d"][s] = e, mu[0], mu[1]
         a["kind"][s] = STATIC if static else 0
+        _, f = self.fixtures.add()
+        F = self.fixtures.arrays
+        F["body"][f] = s
+        for k in ("shape", "radius", "vstart", "vcount", "e", "mu_s", "mu_d"):
+            F[k][f] = a[k][s]
+        F["category"][f], F["mask"][f] = 1, ALL_BITS
         return s
 
     def move(self, s, pos, angle=None):
@@ -51,14 +60,14 @@ class State:
             self.bodies.arrays["q"][s] = angle
 
     def collide(self, pairs, method="sat"):
-        B, V = self.bodies.view, self.verts.view
-        update_geometry(B, V, self.bodies.n, DT, SPEC)
+        B, F, V = self.bodies.view, self.fixtures.view, self.verts.view
+        update_geometry(B, F, V, self.bodies.n, self.fixtures.n, DT, SPEC)
         pairs = np.array(pairs, dtype=np.int32).reshape(-1, 2)
         ctx = StepContext()
         ctx.set("dt", DT)
         ctx.set("spec", SPEC)
         ctx.set("narrowphase", NARROWPHASES.index(method))
-        n = collide(ctx, B, V, pairs, len(pairs), self.contacts)
+        n = collide(ctx, B, F, V, pairs, len(pairs), self.contacts)
         return self.contacts.cur, n
 
 

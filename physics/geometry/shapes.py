@@ -12,6 +12,8 @@ import sys
 
 import numpy as np
 
+from .rounded import rounded_mass
+
 MAX_POLYGON_VERTICES = 64
 # a vertex turn smaller than this (sine of the angle) counts as collinear
 _COLLINEAR_SINE = 1e-9
@@ -111,7 +113,17 @@ class Polygon(Shape):
     kind = "polygon"
     """The shape type's name in scene files: "polygon"."""
 
-    def __init__(self, vertices, *, _spec=None):
+    outline = None
+    """The simple outline (CCW, read-only array) this polygon is a convex piece of, when
+    physics.decompose made it; None otherwise (scene files save the outline, not the pieces)."""
+
+    def __init__(self, vertices, radius=0.0, *, _spec=None):
+        """``vertices`` (m, body coordinates, either winding) and ``radius`` (m, >= 0): a radius
+        rounds the polygon (its outline is the set of points within ``radius`` of the convex core,
+        as Box2D v3's rounded polygons).  ValueError naming the problem (see the class)."""
+        r = _number(radius, "polygon radius")
+        if not math.isfinite(r) or r < 0.0:
+            raise ValueError(f"polygon radius must be >= 0 and finite, got {_show(radius)}")
         pts = _as_points(vertices)
         n = len(pts)
         if n < 3:
@@ -132,15 +144,20 @@ class Polygon(Shape):
         self.vertices = pts
         """Vertices in body coordinates (m), counter-clockwise, as a read-only (n, 2) array."""
         self.vertices.setflags(write=False)
-        self._spec = _spec if _spec is not None else {"polygon": pts.tolist()}
+        self.radius = r
+        """Rounding radius in metres (>= 0; 0 is a sharp polygon)."""
+        self._spec = dict(_spec) if _spec is not None else {"polygon": pts.tolist()}
+        if r > 0.0:
+            self._spec["radius"] = r
         with np.errstate(over="ignore"):  # overflow is what the check looks for
             m, _, inertia = self.mass_properties(1.0)
         _check_mass_scale(m, inertia, "polygon", 2 * scale)
 
     # -- constructors -------------------------------------------------
     @classmethod
-    def box(cls, width: float, height: float) -> "Polygon":
-        """An axis-aligned box ``width`` x ``height`` (m, each > 0) centred on the body origin;
+    def box(cls, width: float, height: float, radius: float = 0.0) -> "Polygon":
+        """An axis-aligned box ``width`` x ``height`` (m, each > 0) centred on the body origin, its
+        corners rounded by ``radius`` (m, >= 0: the rounding adds to the size, as in Box2D v3);
         ValueError for sizes that are not positive finite numbers or too large, small or thin."""
         w, h = _number(width, "box width"), _number(height, "box height")
         if not (math.isfinite(w) and math.isfinite(h)) or w <= 0 or h <= 0:
@@ -149,12 +166,13 @@ class Polygon(Shape):
             raise ValueError(f"box size ({w:g}, {h:g}) m is too large to represent (its moment of inertia "
                              "overflows a float beyond about 1e76 m)")
         hw, hh = 0.5 * w, 0.5 * h
-        return cls([(-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh)], _spec={"box": [w, h]})
+        return cls([(-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh)], radius, _spec={"box": [w, h]})
 
     @classmethod
-    def regular(cls, sides: int, radius: float) -> "Polygon":
+    def regular(cls, sides: int, radius: float, corner_radius: float = 0.0) -> "Polygon":
         """A regular polygon of ``sides`` (an integer 3..64) with circumradius ``radius`` (m, > 0)
-        and a flat bottom edge; ValueError naming the bad argument."""
+        and a flat bottom edge, rounded by ``corner_radius`` (m, >= 0); ValueError naming the bad
+        argument."""
         try:  # comparisons first: int() of inf, NaN or text would raise something else
             whole = not isinstance(sides, (bool, str, bytes)) and 3 <= sides <= MAX_POLYGON_VERTICES \
                 and int(sides) == sides
@@ -168,11 +186,11 @@ class Polygon(Shape):
         a0 = -0.5 * math.pi + math.pi / sides
         pts = [(r * math.cos(a0 + 2 * math.pi * k / sides), r * math.sin(a0 + 2 * math.pi * k / sides))
                for k in range(sides)]
-        return cls(pts, _spec={"regular": {"sides": sides, "radius": r}})
+        return cls(pts, corner_radius, _spec={"regular": {"sides": sides, "radius": r}})
 
     @classmethod
-    def hull(cls, points) -> "Polygon":
-        """The convex hull of arbitrary points (Andrew's monotone chain).
+    def hull(cls, points, radius: float = 0.0) -> "Polygon":
+        """The convex hull of arbitrary points (Andrew's monotone chain), rounded by ``radius``.
 
         Collinear and repeated points are dropped.
         """
@@ -184,7 +202,7 @@ class Polygon(Shape):
                              "tell from one")
         if len(h) > MAX_POLYGON_VERTICES:
             raise ValueError(f"hull has {len(h)} vertices; at most {MAX_POLYGON_VERTICES} are supported")
-        return cls(h)
+        return cls(h, radius)
 
     # -- properties ---------------------------------------------------
     @property
@@ -196,16 +214,21 @@ class Polygon(Shape):
     def bounding_radius(self) -> float:
         """Radius (m) of the smallest circle about the body origin holding every vertex."""
         c = self.centroid
-        return float(np.max(np.hypot(*(self.vertices - c).T)))
+        reach = float(np.max(np.hypot(*(self.vertices - c).T)))
+        return reach + self.radius if self.radius > 0.0 else reach
 
     @property
     def area(self) -> float:
-        """Area in m^2 (> 0: counter-clockwise vertices)."""
+        """Area in m^2 (> 0), the rounding included."""
+        if self.radius > 0.0:
+            return rounded_mass(self.vertices, self.radius)[0]
         return _signed_area(self.vertices - self.vertices.mean(axis=0))
 
     @property
     def centroid(self) -> np.ndarray:
         """Area centre in body coordinates (m), as a 2-array."""
+        if self.radius > 0.0:
+            return rounded_mass(self.vertices, self.radius)[1]
         # taken about the vertex mean: cross products of raw coordinates far
         # from the origin cancel catastrophically (off by 4e-3 m at 1e5 m)
         o = self.vertices.mean(axis=0)
@@ -222,7 +245,11 @@ class Polygon(Shape):
         J_o = rho/12 * sum cross(p_i, p_i+1) (p_i.p_i + p_i.p_i+1 + p_i+1.p_i+1);
         the parallel-axis theorem moves it to the centroid.  Vertices are
         shifted to the centroid first to avoid cancellation far from the origin.
+        A rounded polygon sums its core, edge strips and corner sectors (geometry/rounded.py).
         """
+        if self.radius > 0.0:
+            area, c, j = rounded_mass(self.vertices, self.radius)
+            return density * area, c, density * j
         c = self.centroid
         p = self.vertices - c
         q = np.roll(p, -1, axis=0)
@@ -233,10 +260,13 @@ class Polygon(Shape):
         return density * area, c.copy(), inertia
 
     def __repr__(self):
+        if self.radius > 0.0:
+            return f"Polygon({self.vertices.tolist()}, radius={self.radius})"
         return f"Polygon({self.vertices.tolist()})"
 
     def __eq__(self, other):
-        return isinstance(other, Polygon) and np.array_equal(self.vertices, other.vertices)
+        return (isinstance(other, Polygon) and np.array_equal(self.vertices, other.vertices)
+                and self.radius == other.radius)
 
     __hash__ = None
 

@@ -1,53 +1,85 @@
-"""World-space geometry for the collision stages: vertices, normals, AABBs."""
+"""World-space geometry for the collision stages: vertices, normals, AABBs, per fixture."""
 from __future__ import annotations
 
 import math
 
 from .._jit import kernel
-from ..store import CIRCLE
+from ..store.fixtures import CHAIN_SEGMENT, CIRCLE
+
+
+@kernel(inline="always")
+def _fixture_box(F, V, f, px, py, c, s, margin):
+    """Transform fixture f of a body at (px, py), angle (c, s); write and return its fattened AABB."""
+    r = F.radius[f]
+    if F.shape[f] == CIRCLE:
+        lx = F.center[f, 0]
+        ly = F.center[f, 1]
+        wx = px + (c * lx - s * ly)
+        wy = py + (s * lx + c * ly)
+        F.wcenter[f, 0] = wx
+        F.wcenter[f, 1] = wy
+        return wx - r - margin, wy - r - margin, wx + r + margin, wy + r + margin
+    lo_x = math.inf
+    lo_y = math.inf
+    hi_x = -math.inf
+    hi_y = -math.inf
+    for k in range(F.vstart[f], F.vstart[f] + F.vcount[f]):
+        lx = V.local[k, 0]
+        ly = V.local[k, 1]
+        wx = px + c * lx - s * ly
+        wy = py + s * lx + c * ly
+        V.world[k, 0] = wx
+        V.world[k, 1] = wy
+        nx = V.normal[k, 0]
+        ny = V.normal[k, 1]
+        V.wnormal[k, 0] = c * nx - s * ny
+        V.wnormal[k, 1] = s * nx + c * ny
+        lo_x = min(lo_x, wx)
+        lo_y = min(lo_y, wy)
+        hi_x = max(hi_x, wx)
+        hi_y = max(hi_y, wy)
+    if F.shape[f] == CHAIN_SEGMENT:
+        for g in range(2):
+            lx = F.ghost[f, g, 0]
+            ly = F.ghost[f, g, 1]
+            F.wghost[f, g, 0] = px + c * lx - s * ly
+            F.wghost[f, g, 1] = py + s * lx + c * ly
+    if r > 0.0:  # a rounded core reaches r further (never added for sharp ones: bit-identical boxes)
+        lo_x -= r
+        lo_y -= r
+        hi_x += r
+        hi_y += r
+    return lo_x - margin, lo_y - margin, hi_x + margin, hi_y + margin
 
 
 @kernel
-def update_geometry(B, V, n, dt, spec):
-    """Transform every polygon to world space and refresh the AABBs.
+def update_geometry(B, F, V, n, nf, dt, spec):
+    """Transform every fixture to world space and refresh the fixtures' and bodies' AABBs.
 
-    Each AABB is fattened by m_i = spec/2 + dt (|v_i| + |w_i| r_i): two boxes
-    then overlap whenever the bodies can come within the pair's speculative
-    margin during the step, so the narrow phase never misses a fast pair.
+    Each AABB is fattened by m_i = spec/2 + dt (|v_i| + |w_i| r_i) of its body: two boxes
+    then overlap whenever the bodies can come within the pair's speculative margin during
+    the step, so the narrow phase never misses a fast pair.  A body's AABB is the union of
+    its fixtures' (for the sandbox's overlays and queries); the fixtures also get the body's
+    kind and awake flag, which the broad phase reads.
     """
     for i in range(n):
+        B.aabb[i, 0] = math.inf
+        B.aabb[i, 1] = math.inf
+        B.aabb[i, 2] = -math.inf
+        B.aabb[i, 3] = -math.inf
+    for f in range(nf):
+        i = F.body[f]
         c = math.cos(B.q[i])
         s = math.sin(B.q[i])
-        px = B.x[i, 0]
-        py = B.x[i, 1]
         margin = 0.5 * spec + dt * (math.hypot(B.v[i, 0], B.v[i, 1]) + abs(B.w[i]) * B.bound_r[i])
-        if B.shape[i] == CIRCLE:
-            r = B.radius[i]
-            B.aabb[i, 0] = px - r - margin
-            B.aabb[i, 1] = py - r - margin
-            B.aabb[i, 2] = px + r + margin
-            B.aabb[i, 3] = py + r + margin
-            continue
-        lo_x = math.inf
-        lo_y = math.inf
-        hi_x = -math.inf
-        hi_y = -math.inf
-        for k in range(B.vstart[i], B.vstart[i] + B.vcount[i]):
-            lx = V.local[k, 0]
-            ly = V.local[k, 1]
-            wx = px + c * lx - s * ly
-            wy = py + s * lx + c * ly
-            V.world[k, 0] = wx
-            V.world[k, 1] = wy
-            nx = V.normal[k, 0]
-            ny = V.normal[k, 1]
-            V.wnormal[k, 0] = c * nx - s * ny
-            V.wnormal[k, 1] = s * nx + c * ny
-            lo_x = min(lo_x, wx)
-            lo_y = min(lo_y, wy)
-            hi_x = max(hi_x, wx)
-            hi_y = max(hi_y, wy)
-        B.aabb[i, 0] = lo_x - margin
-        B.aabb[i, 1] = lo_y - margin
-        B.aabb[i, 2] = hi_x + margin
-        B.aabb[i, 3] = hi_y + margin
+        x0, y0, x1, y1 = _fixture_box(F, V, f, B.x[i, 0], B.x[i, 1], c, s, margin)
+        F.aabb[f, 0] = x0
+        F.aabb[f, 1] = y0
+        F.aabb[f, 2] = x1
+        F.aabb[f, 3] = y1
+        F.kind[f] = B.kind[i]
+        F.awake[f] = B.awake[i]
+        B.aabb[i, 0] = min(B.aabb[i, 0], x0)
+        B.aabb[i, 1] = min(B.aabb[i, 1], y0)
+        B.aabb[i, 2] = max(B.aabb[i, 2], x1)
+        B.aabb[i, 3] = max(B.aabb[i, 3], y1)

@@ -11,11 +11,11 @@ from .checkpoint import count_nonfinite, save_state
 
 
 @kernel
-def begin_step(ctx, B, V, X, Q, Vel, W):
-    """Save the last finite state, then refresh world geometry and AABBs."""
+def begin_step(ctx, B, F, V, nf, X, Q, Vel, W):
+    """Save the last finite state, then refresh the ``nf`` fixtures' world geometry and AABBs."""
     c = ctx[0]
     save_state(B, c.n, X, Q, Vel, W)
-    update_geometry(B, V, c.n, c.dt, c.spec)
+    update_geometry(B, F, V, c.n, nf, c.dt, c.spec)
 
 
 @kernel

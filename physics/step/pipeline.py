@@ -20,7 +20,7 @@ import numpy as np
 
 from .. import options
 from ..collision import broadphase, narrowphase
-from ..collision.broadphase.exclude import drop_excluded
+from ..collision.broadphase.fixture_filter import filter_pairs
 from ..constraints.joints.work import joint_work
 from ..errors import SimulationError
 from ..geometry.transform import update_geometry
@@ -44,6 +44,7 @@ class Pipeline:
         self.n_awake = -1  # unknown: run everything
         self.dirty = True  # the world's settings changed: refresh the context's settings
         self._dt = None
+        self._no_keys = np.zeros(0, np.int64)
 
     def invalidate(self) -> None:
         """Something was edited: the next step runs in full."""
@@ -90,22 +91,26 @@ class Pipeline:
     # -- stages ---------------------------------------------------------
     def refresh_geometry(self, world, dt: float = 0.0) -> None:
         s = world._store
-        update_geometry(s.bodies.view, s.verts.view, s.bodies.n, dt, world.speculative_distance)
+        update_geometry(s.bodies.view, s.fixtures.view, s.verts.view, s.bodies.n, s.fixtures.n, dt,
+                        world.speculative_distance)
 
     def collide(self, world, dt: float, geometry: bool = True) -> None:
         s = world._store
         B = s.bodies.view
         if geometry:
             self.refresh_geometry(world, dt)
-        self.npairs, self._pairs = broadphase.find_pairs(B, s.bodies.n, world.broadphase, self._pairs,
+        F = s.fixtures.view
+        self.npairs, self._pairs = broadphase.find_pairs(F, s.fixtures.n, world.broadphase, self._pairs,
                                                          world.max_pairs)
+        keys = self._no_keys
         if s.joints.n:  # joined bodies do not collide (unless the joint says so)
             work = joint_work(s)
             work.update(s)
-            if len(work.exclude):
-                self.npairs = int(drop_excluded(self._pairs, self.npairs, work.exclude))
+            keys = work.exclude
+        # fixtures of one body, filtered pairs and joined bodies never collide
+        self.npairs = int(filter_pairs(F, self._pairs, self.npairs, keys))
         self.profile.stamp("broadphase")
-        narrowphase.collide(self.ctx, B, s.verts.view, self._pairs, self.npairs, s.contacts)
+        narrowphase.collide(self.ctx, B, F, s.verts.view, self._pairs, self.npairs, s.contacts)
         self.ctx.set("nc", s.contacts.n)
         self.profile.stamp("narrowphase")
 
@@ -135,7 +140,8 @@ class Pipeline:
         B = store.bodies.view
         ck = self._checkpoint
         ck.ensure(n)
-        begin_step(self.ctx.array, B, store.verts.view, ck.X, ck.Q, ck.V, ck.W)
+        begin_step(self.ctx.array, B, store.fixtures.view, store.verts.view, store.fixtures.n,
+                   ck.X, ck.Q, ck.V, ck.W)
         self.profile.stamp("begin")
         stage = "collide"
         try:
@@ -220,7 +226,7 @@ class Pipeline:
         values = world._settings_store(world.solver).values
         stages = []
         if n:
-            bp = broadphase.resolve(world.broadphase, n)
+            bp = broadphase.resolve(world.broadphase, store.fixtures.n)
             stages += ["geometry", f"broadphase:{bp}", f"narrowphase:{world.narrowphase}"]
             stages += list(world._mode.stages(store, values, world.integrator))
             if world.sleeping:

@@ -9,12 +9,13 @@ from __future__ import annotations
 
 from collections import namedtuple
 
+from .fixtures import CIRCLE, POLYGON
 from .table import f8, i1, i4, i8
 
 DYNAMIC, STATIC, KINEMATIC = 0, 1, 2
 KINDS = {"dynamic": DYNAMIC, "static": STATIC, "kinematic": KINEMATIC}
 KIND_NAMES = {v: k for k, v in KINDS.items()}
-POLYGON, CIRCLE = 0, 1
+__all__ = ["BODY_FIELDS", "Bodies", "CIRCLE", "DYNAMIC", "KINDS", "KIND_NAMES", "KINEMATIC", "POLYGON", "STATIC"]
 
 
 # name: (per-entry shape, dtype)
@@ -27,18 +28,18 @@ BODY_FIELDS = {
     "inertia": ((), f8),    # moment of inertia about the centre of mass
     "inv_m": ((), f8),      # 0 for static and kinematic bodies
     "inv_i": ((), f8),
-    "density": ((), f8),
+    "density": ((), f8),  # first fixture: kg/m^2
     "kind": ((), i1),       # DYNAMIC / STATIC / KINEMATIC
-    "e": ((), f8),          # restitution
-    "mu_s": ((), f8),       # static friction coefficient
-    "mu_d": ((), f8),       # dynamic friction coefficient
-    "shape": ((), i1),      # POLYGON / CIRCLE
-    "radius": ((), f8),     # circle radius (0 for polygons)
-    "vstart": ((), i4),     # first vertex in the pool (polygons)
-    "vcount": ((), i4),     # vertex count (0 for circles)
+    "e": ((), f8),  # first fixture: restitution
+    "mu_s": ((), f8),  # first fixture: static friction coefficient
+    "mu_d": ((), f8),  # first fixture: dynamic friction coefficient
+    "shape": ((), i1),  # first fixture: POLYGON / CIRCLE
+    "radius": ((), f8),  # first fixture: circle radius (0 for polygons)
+    "vstart": ((), i4),  # first fixture: first vertex in the pool (polygons)
+    "vcount": ((), i4),  # first fixture: vertex count (0 for circles)
     "com": ((2,), f8),      # centre of mass in body coordinates (origin -> com)
-    "bound_r": ((), f8),    # radius of the bounding circle about the centre of mass
-    "aabb": ((4,), f8),     # min x, min y, max x, max y (fattened by the speculative margin)
+    "bound_r": ((), f8),    # radius of the bounding circle of all fixtures about the centre of mass
+    "aabb": ((4,), f8),     # union of the fixtures' AABBs (fattened by the speculative margin)
     "awake": ((), i1),      # 1 awake, 0 asleep
     "sleep_t": ((), f8),    # time spent below the sleep velocity thresholds
     "island": ((), i4),     # island label while asleep (-1 awake)

@@ -32,19 +32,26 @@ class VertexPool:
         self.view = Verts(**self.arrays)
 
     def add(self, local: np.ndarray) -> int:
+        """Append a polygon's vertices (CCW, relative to its body's centre of mass); returns the start."""
         k = len(local)
         if self.top + k > len(self.arrays["local"]):
             self.arrays = grown(self.arrays, max(self.top + k, 2 * len(self.arrays["local"])))
             self.view = Verts(**self.arrays)
         s = self.top
+        self.top += k
+        self.live += k
+        self.set(s, local)
+        return s
+
+    def set(self, s: int, local: np.ndarray) -> None:
+        """Overwrite the vertices at ``s`` (same count) and their edge normals, e.g. after the
+        body's centre of mass moved."""
+        k = len(local)
         self.arrays["local"][s:s + k] = local
         e = np.roll(local, -1, axis=0) - local
         nrm = np.stack([e[:, 1], -e[:, 0]], axis=1)
         nrm /= np.hypot(nrm[:, 0], nrm[:, 1])[:, None]
         self.arrays["normal"][s:s + k] = nrm
-        self.top += k
-        self.live += k
-        return s
 
     def release(self, count: int) -> None:
         self.live -= count

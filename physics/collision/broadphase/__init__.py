@@ -1,7 +1,9 @@
 """Broad phase: slot pairs whose fattened AABBs overlap (docs/internals.md, stage 2).
 
 ``find_pairs(B, n, method, pairs)`` is the one entry point the pipeline
-calls.  Every method returns the same pairs in the same order (ascending
+calls, with the fixture table (store/fixtures.py: per-fixture AABBs and the
+body's kind and awake flag mirrored; fixture_filter.py then drops pairs of one
+body and filtered pairs); any table with ``aabb``, ``kind`` and ``awake`` works.  Every method returns the same pairs in the same order (ascending
 (i, j)), so switching method never changes a simulation.  Scratch arrays live
 here between calls and grow on demand; they are shared by all worlds, so the
 broad phase is not re-entrant across threads.

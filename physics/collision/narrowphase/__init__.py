@@ -21,8 +21,8 @@ __all__ = ["collide", "sat_query", "gjk_distance", "epa", "polygon_collide",
            "circle_circle", "polygon_circle", "SAT", "GJK", "METHODS"]
 
 
-def collide(ctx, B, V, pairs, npairs, contacts) -> int:
-    """Manifolds for ``pairs[:npairs]`` into ``contacts.cur``; returns the row count.
+def collide(ctx, B, F, V, pairs, npairs, contacts) -> int:
+    """Manifolds for the fixture pairs ``pairs[:npairs]`` into ``contacts.cur``; returns the row count.
 
     ``ctx`` is the step context (dt, speculative distance, narrow-phase code).
     The previous step's rows become ``contacts.prev`` and carry their point
@@ -30,6 +30,6 @@ def collide(ctx, B, V, pairs, npairs, contacts) -> int:
     """
     contacts.swap()
     contacts.ensure(int(npairs))
-    contacts.n = int(collide_kernel(ctx.array, B, V, pairs, int(npairs), contacts.cur, contacts.prev,
+    contacts.n = int(collide_kernel(ctx.array, B, F, V, pairs, int(npairs), contacts.cur, contacts.prev,
                                     int(contacts.n_prev)))
     return contacts.n

@@ -1,7 +1,10 @@
-"""The narrow-phase kernel: every broad-phase pair -> sorted contact rows.
+"""The narrow-phase kernel: every broad-phase fixture pair -> sorted contact rows.
 
-Pairs are oriented by stable id (a = the lower id), so a row's key
-(id_a << 32) | id_b and its features survive slot changes from removals;
+Pairs are oriented by stable fixture id (a = the lower id), so a row's key
+(id_a << 32) | id_b and its features survive slot changes from removals (a
+world of one-fixture bodies numbers its fixtures as its bodies: the same keys,
+order and results as before fixtures); the row's ``a``/``b`` are the fixtures'
+body slots, which is all the solvers read;
 pairs are visited in key order, so rows come out sorted and the warm-start
 lookup is a merge walk.  Each pair is computed in coordinates relative to
 a's centre of mass: world coordinates 10 km out would otherwise cost
@@ -15,21 +18,23 @@ import numpy as np
 
 from ..._jit import kernel
 from ...geometry.shapes import MAX_POLYGON_VERTICES
-from ...store import CIRCLE
+from ...store.fixtures import CHAIN_SEGMENT, CIRCLE, POLYGON
+from .chain import chain_circle, chain_polygon
 from .circles import circle_circle, polygon_circle
 from .pair import polygon_pair
+from .rounded import round_pair
 from .carry import carry_over, seek
 
 BIAS = 1e-3          # reference-face hysteresis, relative to the smaller body
 
 
 @kernel(inline="always")
-def pair_keys(B, pairs, npairs):
-    """Keys of the pairs oriented by id (lower id first)."""
+def pair_keys(F, pairs, npairs):
+    """Keys of the fixture pairs oriented by id (lower id first)."""
     keys = np.empty(npairs, np.int64)
     for k in range(npairs):
-        ia = B.id[pairs[k, 0]]
-        ib = B.id[pairs[k, 1]]
+        ia = F.id[pairs[k, 0]]
+        ib = F.id[pairs[k, 1]]
         if ia > ib:
             ia, ib = ib, ia
         keys[k] = (ia << 32) | ib
@@ -72,10 +77,10 @@ def may_touch(B, a, b, dt, spec):
 
 
 @kernel(inline="always")
-def _relative(V, B, i, ox, oy, out):
-    """Vertices of polygon i shifted by -(ox, oy) into ``out``; returns the view."""
-    s = B.vstart[i]
-    n = B.vcount[i]
+def _relative(V, F, i, ox, oy, out):
+    """Core vertices of fixture i shifted by -(ox, oy) into ``out``; returns the view."""
+    s = F.vstart[i]
+    n = F.vcount[i]
     for k in range(n):
         out[k, 0] = V.world[s + k, 0] - ox
         out[k, 1] = V.world[s + k, 1] - oy
@@ -83,33 +88,70 @@ def _relative(V, B, i, ox, oy, out):
 
 
 @kernel(inline="always")
-def _manifold(B, V, a, b, method, margin, sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
-    """Dispatch on the shape pair; points are relative to a's centre."""
+def _manifold(B, F, V, fa, fb, a, b, method, margin, sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
+    """Dispatch on the fixtures' shape pair; points are relative to body a's centre.
+
+    Circles and sharp polygons take the paths they took before fixtures (bit for bit);
+    any pair with a rounded core (rounded polygon, capsule, segment) takes rounded.py.
+    """
     ox, oy = B.x[a, 0], B.x[a, 1]
-    bx, by = B.x[b, 0] - ox, B.x[b, 1] - oy
-    if B.shape[a] == CIRCLE and B.shape[b] == CIRCLE:
-        return circle_circle(0.0, 0.0, B.radius[a], bx, by, B.radius[b], margin, out_p, out_s, out_f)
-    if B.shape[a] == CIRCLE or B.shape[b] == CIRCLE:
+    ta, tb = F.shape[fa], F.shape[fb]
+    if ta == CHAIN_SEGMENT or tb == CHAIN_SEGMENT:
+        return _chain(B, F, V, fa, fb, a, b, ox, oy, margin, sc_a, sc_b, out_p, out_s, out_f)
+    if ta == CIRCLE and tb == CIRCLE:
+        return circle_circle(F.wcenter[fa, 0] - ox, F.wcenter[fa, 1] - oy, F.radius[fa],
+                             F.wcenter[fb, 0] - ox, F.wcenter[fb, 1] - oy, F.radius[fb], margin, out_p, out_s, out_f)
+    if ta == CIRCLE or tb == CIRCLE:
         # one call site for both orders (compile time); the kernel's normal
-        # goes polygon -> circle, so flip it when the circle is a
-        p, c = (a, b) if B.shape[b] == CIRCLE else (b, a)
-        vp = _relative(V, B, p, ox, oy, sc_a)
-        np_ = V.wnormal[B.vstart[p]:B.vstart[p] + B.vcount[p]]
-        cnt, nx, ny = polygon_circle(vp, np_, B.x[c, 0] - ox, B.x[c, 1] - oy, B.radius[c], margin,
-                                     out_p, out_s, out_f)
-        if c == a:
+        # goes core -> circle, so flip it when the circle is a
+        p, c = (fa, fb) if tb == CIRCLE else (fb, fa)
+        vp = _relative(V, F, p, ox, oy, sc_a)
+        np_ = V.wnormal[F.vstart[p]:F.vstart[p] + F.vcount[p]]
+        rp = F.radius[p]
+        cnt, nx, ny = polygon_circle(vp, np_, F.wcenter[c, 0] - ox, F.wcenter[c, 1] - oy, F.radius[c] + rp,
+                                     margin, out_p, out_s, out_f)
+        if rp > 0.0:  # a rounded core's surface is rp further out: the midpoint moves by rp
+            for k in range(cnt):
+                out_p[k, 0] += rp * nx
+                out_p[k, 1] += rp * ny
+        if c == fa:
             return cnt, -nx, -ny
         return cnt, nx, ny
-    vb = _relative(V, B, b, ox, oy, sc_b)
-    nb = V.wnormal[B.vstart[b]:B.vstart[b] + B.vcount[b]]
-    va = _relative(V, B, a, ox, oy, sc_a)
-    na = V.wnormal[B.vstart[a]:B.vstart[a] + B.vcount[a]]
+    vb = _relative(V, F, fb, ox, oy, sc_b)
+    nb = V.wnormal[F.vstart[fb]:F.vstart[fb] + F.vcount[fb]]
+    va = _relative(V, F, fa, ox, oy, sc_a)
+    na = V.wnormal[F.vstart[fa]:F.vstart[fa] + F.vcount[fa]]
     bias = BIAS * min(B.bound_r[a], B.bound_r[b])
-    return polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p, out_s, out_f)
+    if ta == POLYGON and tb == POLYGON and F.radius[fa] == 0.0 and F.radius[fb] == 0.0:
+        return polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p, out_s, out_f)
+    return round_pair(va, na, F.radius[fa], vb, nb, F.radius[fb], margin, bias, out_p, out_s, out_f)
 
 
 @kernel(inline="always")
-def _write_row(C, row, B, a, b, key, count, nx, ny, out_p, out_s, out_f):
+def _chain(B, F, V, fa, fb, a, b, ox, oy, margin, sc_a, sc_b, out_p, out_s, out_f):
+    """A chain segment against any shape (chain.py); the normal is flipped when the chain is b."""
+    s, o = (fa, fb) if F.shape[fa] == CHAIN_SEGMENT else (fb, fa)
+    vs = _relative(V, F, s, ox, oy, sc_a)
+    g = sc_a[2:4]
+    for k in range(2):
+        g[k, 0] = F.wghost[s, k, 0] - ox
+        g[k, 1] = F.wghost[s, k, 1] - oy
+    if F.shape[o] == CIRCLE:
+        cnt, nx, ny = chain_circle(vs, g, F.wcenter[o, 0] - ox, F.wcenter[o, 1] - oy, F.radius[o], margin,
+                                   out_p, out_s, out_f)
+    else:
+        vo = _relative(V, F, o, ox, oy, sc_b)
+        ns = V.wnormal[F.vstart[s]:F.vstart[s] + 2]
+        no = V.wnormal[F.vstart[o]:F.vstart[o] + F.vcount[o]]
+        bias = BIAS * min(B.bound_r[a], B.bound_r[b])
+        cnt, nx, ny = chain_polygon(vs, ns, g, vo, no, F.radius[o], margin, bias, out_p, out_s, out_f)
+    if s == fb:
+        return cnt, -nx, -ny
+    return cnt, nx, ny
+
+
+@kernel(inline="always")
+def _write_row(C, row, B, F, fa, fb, a, b, key, count, nx, ny, out_p, out_s, out_f):
     ox, oy = B.x[a, 0], B.x[a, 1]
     C.a[row] = a
     C.b[row] = b
@@ -123,14 +165,14 @@ def _write_row(C, row, B, a, b, key, count, nx, ny, out_p, out_s, out_f):
         C.point[row, p, 1] = out_p[p, 1] + oy if live else 0.0
         C.depth[row, p] = -out_s[p] if live else 0.0
         C.feature[row, p] = out_f[p] if live else -1
-    # combined materials: the bouncier surface wins; friction is a geometric mean
-    C.e[row] = max(B.e[a], B.e[b])
-    C.mu_s[row] = math.sqrt(B.mu_s[a] * B.mu_s[b])
-    C.mu_d[row] = math.sqrt(B.mu_d[a] * B.mu_d[b])
+    # combined materials of the two fixtures: the bouncier surface wins; friction is a geometric mean
+    C.e[row] = max(F.e[fa], F.e[fb])
+    C.mu_s[row] = math.sqrt(F.mu_s[fa] * F.mu_s[fb])
+    C.mu_d[row] = math.sqrt(F.mu_d[fa] * F.mu_d[fb])
 
 
 @kernel
-def collide_kernel(ctx, B, V, pairs, npairs, C, P, n_prev):
+def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev):
     """Fill C (rows sorted by key, point state carried over from P); returns the row count.
 
     ``ctx``: the step context (physics/step/context.py: dt, spec, narrowphase).
@@ -138,7 +180,7 @@ def collide_kernel(ctx, B, V, pairs, npairs, C, P, n_prev):
     Allocates the sort order and the scratch once per call; the per-pair work
     is ``_rows``.
     """
-    keys = pair_keys(B, pairs, npairs)
+    keys = pair_keys(F, pairs, npairs)
     order = np.argsort(keys)
     sc_a = np.empty((MAX_POLYGON_VERTICES, 2))
     sc_b = np.empty((MAX_POLYGON_VERTICES, 2))
@@ -150,7 +192,7 @@ def collide_kernel(ctx, B, V, pairs, npairs, C, P, n_prev):
     out_s = np.zeros(2)
     out_f = np.zeros(2, np.int32)
     c = ctx[0]
-    return _rows(B, V, pairs, order, keys, C, P, n_prev, c.narrowphase, c.dt, c.spec,
+    return _rows(B, F, V, pairs, order, keys, C, P, n_prev, c.narrowphase, c.dt, c.spec,
                  sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f)
 
 
@@ -158,22 +200,23 @@ def collide_kernel(ctx, B, V, pairs, npairs, C, P, n_prev):
 # dozens of array views that the inlined helpers bind per pair cost no atomic
 # reference-count updates (with them a box pair took ~800 ns instead of ~100).
 @kernel(_nrt=False)
-def _rows(B, V, pairs, order, keys, C, P, n_prev, method, dt, spec,
+def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, dt, spec,
           sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
     row = 0
     ptr = 0
     for k in order:
-        a, b = pairs[k, 0], pairs[k, 1]
-        if B.id[a] > B.id[b]:
-            a, b = b, a
+        fa, fb = pairs[k, 0], pairs[k, 1]
+        if F.id[fa] > F.id[fb]:
+            fa, fb = fb, fa
+        a, b = F.body[fa], F.body[fb]
         if not may_touch(B, a, b, dt, spec):
             continue
         margin = pair_margin(B, a, b, dt, spec)
-        count, nx, ny = _manifold(B, V, a, b, method, margin, sc_a, sc_b, sw, si, lam, poly,
+        count, nx, ny = _manifold(B, F, V, fa, fb, a, b, method, margin, sc_a, sc_b, sw, si, lam, poly,
                                   out_p, out_s, out_f)
         if count == 0:
             continue
-        _write_row(C, row, B, a, b, keys[k], count, nx, ny, out_p, out_s, out_f)
+        _write_row(C, row, B, F, fa, fb, a, b, keys[k], count, nx, ny, out_p, out_s, out_f)
         ptr = seek(P, n_prev, ptr, keys[k])
         carry_over(C, row, P, n_prev, ptr)
         row += 1

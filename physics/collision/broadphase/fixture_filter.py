@@ -1,0 +1,59 @@
+"""Which overlapping fixture pairs may collide: not two fixtures of one body, the collision
+filter, and not two bodies a joint joins (unless the joint asks for ``collide_connected``).
+
+The filter has Box2D's semantics (b2ShouldShapesCollide): a shared non-zero ``group``
+decides alone (positive: always collide, negative: never); otherwise two fixtures collide
+when each one's category bits meet the other's mask, ``(ca & mb) != 0 and (cb & ma) != 0``.
+
+The joints' keys ``(min body slot << 32) | max body slot`` are kept sorted (constraints/
+joints/work.py) and each pair's bodies are looked up by bisection.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..._jit import kernel
+
+
+@kernel(inline="always")
+def should_collide(F, i, j):
+    """Box2D's filter rule for fixtures i and j (module docstring)."""
+    gi = F.group[i]
+    if gi == F.group[j] and gi != 0:
+        return gi > 0
+    return (F.category[i] & F.mask[j]) != 0 and (F.category[j] & F.mask[i]) != 0
+
+
+@kernel(inline="always")
+def _joined(keys, a, b):
+    """Is the body pair (a, b) in the sorted joint keys?"""
+    m = keys.shape[0]
+    if m == 0:
+        return False
+    key = np.int64(min(a, b)) * 4294967296 + np.int64(max(a, b))
+    lo = 0
+    hi = m
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if keys[mid] < key:
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo < m and keys[lo] == key
+
+
+@kernel
+def filter_pairs(F, pairs, npairs, keys):
+    """Compact the fixture pairs ``pairs[:npairs]`` to those that may collide; returns the count."""
+    k = 0
+    for p in range(npairs):
+        i = pairs[p, 0]
+        j = pairs[p, 1]
+        a = F.body[i]
+        b = F.body[j]
+        if a == b or not should_collide(F, i, j) or _joined(keys, a, b):
+            continue
+        pairs[k, 0] = i
+        pairs[k, 1] = j
+        k += 1
+    return k
