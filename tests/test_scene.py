@@ -229,7 +229,7 @@ def test_saved_file_is_strict_json_with_schema_reference(tmp_path):
     data = json.loads(p.read_text(), parse_constant=lambda c: pytest.fail(f"non-strict JSON constant {c}"))
     assert data["$schema"] == "stelkropp.schema.json"
     assert (data["format"], data["version"], data["name"], data["description"]) == \
-        ("stelkropp.scene", 1, "renamed", "new words")
+        ("stelkropp.scene", 2, "renamed", "new words")
 
 
 def test_camera_is_kept():

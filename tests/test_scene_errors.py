@@ -48,7 +48,7 @@ def test_good_scene_loads():
 CASES = [
     ("unknown format", lambda d: d.update(format="box2d.scene"), "format", "not a Stelkropp scene"),
     ("missing format", lambda d: d.pop("format"), "format", "missing"),
-    ("unknown version", lambda d: d.update(version=2), "version", "unsupported version"),
+    ("unknown version", lambda d: d.update(version=3), "version", "unsupported version"),
     ("version as string", lambda d: d.update(version="1"), "version", "unsupported version"),
     ("position wrong type", lambda d: d["bodies"][1].update(position="0,0"), "bodies[1].position",
      "expected an array"),
@@ -232,7 +232,7 @@ def test_scene_error_is_exported_and_carries_problems():
     d["version"] = 9
     with pytest.raises(physics.SceneError) as info:
         scene_from_dict(d)
-    assert info.value.problems == [("version", "unsupported version (got 9); this build reads version 1")]
+    assert info.value.problems == [("version", "unsupported version (got 9); this build reads versions 1, 2")]
     assert info.value.path == "<dict>"
 
 

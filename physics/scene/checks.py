@@ -1,6 +1,6 @@
 """Every problem in scene data, each as (JSON path, reason).
 
-Order of checks: format and version (if the data is not a version-1 scene,
+Order of checks: format and version (if the data is not a version 1 or 2 scene,
 nothing else is worth reporting), the body limit, the values themselves
 (nesting depth, numbers that are no finite float, repeated keys, text that
 is not valid Unicode), the JSON Schema, and last the hand checks for what a
@@ -18,10 +18,10 @@ import math
 from jsonschema import Draft202012Validator
 
 from .. import solvers
-from ..geometry.shapes import Circle, Polygon
 from ..validate import checked_density
 from . import schema as fmt
 from .joints import joint_problems
+from .shapes import fixture_fields, kind_of, make_shapes, shape_problem
 from .json_io import Duplicates, NonFinite
 from .problems import finish, preview, quoted, type_name
 
@@ -56,9 +56,11 @@ def header_problems(data) -> list:
     if data.get("format") != fmt.FORMAT:
         got = "missing" if "format" not in data else f"got {preview(data['format'])}"
         out.append((("format",), f"not a Stelkropp scene: expected \"format\": \"{fmt.FORMAT}\" ({got})"))
-    if data.get("version") != fmt.VERSION or isinstance(data.get("version"), bool):
+    version = data.get("version")
+    if isinstance(version, bool) or not isinstance(version, int) or version not in fmt.VERSIONS:
         got = "missing" if "version" not in data else f"got {preview(data['version'])}"
-        out.append((("version",), f"unsupported version ({got}); this build reads version {fmt.VERSION}"))
+        out.append((("version",), f"unsupported version ({got}); this build reads versions "
+                                  f"{', '.join(map(str, fmt.VERSIONS))}"))
     return out
 
 
@@ -78,7 +80,7 @@ def value_problems(data) -> tuple:
     while stack and len(out) <= fmt.MAX_PROBLEMS:
         path, v = stack.pop()
         if isinstance(v, (dict, list)) and len(path) >= fmt.MAX_DEPTH:
-            out.append((path, f"nested more than {fmt.MAX_DEPTH} levels deep (a scene needs 6)"))
+            out.append((path, f"nested more than {fmt.MAX_DEPTH} levels deep (a scene needs 7)"))
             too_deep = True
         elif isinstance(v, dict):
             if isinstance(v, Duplicates):
@@ -147,8 +149,6 @@ def _explain(err, path):
         allowed = list(err.schema.get("properties", {}))
         unknown = itertools.islice((k for k in inst if k not in allowed), fmt.MAX_PROBLEMS + 1)
         return [(path + (k,), f"unknown key (allowed: {', '.join(allowed)})") for k in unknown]
-    if v in ("minProperties", "maxProperties") and path[-1:] == ("shape",):
-        return [(path, f"give exactly one of {', '.join(fmt.SCHEMA['$defs']['shape']['properties'])}")]
     if v == "type":
         want = [val] if isinstance(val, str) else val
         return [(path, f"expected {' or '.join(_article(t) for t in want)}, got {type_name(inst)} {preview(inst)}")]
@@ -174,42 +174,74 @@ def _article(t):
 
 
 # -- hand checks ----------------------------------------------------------
-def make_shape(spec):
-    """The physics shape for a (schema-valid) shape object; ValueError if the geometry is bad."""
-    (key, val), = spec.items()
-    if key == "box":
-        return Polygon.box(*val)
-    if key == "polygon":
-        return Polygon(val)
-    if key == "regular":
-        return Polygon.regular(val["sides"], val["radius"])
-    if isinstance(val, dict):
-        return Circle(val["radius"], val.get("offset", (0.0, 0.0)))
-    return Circle(val)
-
-
-def body_problems(bodies, bad: Rejected):
-    """(problems, shapes): each body's shape built (shapes[i], or None if it was not), then the mass
-    and inertia its density gives it, which must be representable.  (Its centre of mass cannot
-    overflow: shape coordinates are at most shapes.MAX_COORDINATE, far below a float's last ulp.)"""
+def body_problems(bodies, bad: Rejected, version: int = fmt.VERSION):
+    """(problems, shapes): each body's fixtures built (shapes[i]: a list of (shape, fields) pairs,
+    or None if they were not), then the mass and inertia each density gives, which must be
+    representable.  (Centres of mass cannot overflow: shape coordinates are at most
+    shapes.MAX_COORDINATE, far below a float's last ulp.)"""
     out, shapes = [], []
     for i, b in enumerate(bodies):
         path = ("bodies", i)
         shapes.append(None)
-        if (*path, "shape") in bad or not isinstance(b, dict) or "shape" not in b:
+        if not isinstance(b, dict):
             continue
-        try:
-            shapes[i] = shape = make_shape(b["shape"])
-        except ValueError as exc:
-            out.append(((*path, "shape", next(iter(b["shape"]))), str(exc)))
+        specs, where = _specs(b, path, version, out)
+        if not specs or (*path, "shapes") in bad.paths:
+            continue
+        built = [None if p in bad else _build_one(spec, p, version, out) for spec, p in zip(specs, where)]
+        if any(x is None for x in built):
+            continue
+        shapes[i] = [(sh, fields) for made, fields, _ in built for sh in made]
+        if b.get("kind", fmt.BODY_DEFAULTS["kind"]) == "dynamic" and all(sh.area == 0.0 for sh, _ in shapes[i]):
+            out.append((where[0] if len(where) == 1 else (*path, "shapes"),
+                        "a dynamic body needs a shape with area (segments and chains have none); make it "
+                        "static or kinematic"))
             continue
         density = b.get("density", fmt.BODY_DEFAULTS["density"])
-        if (*path, "density") not in bad:
+        for made, fields, p in built:
+            d_path = (*p, "density") if "density" in fields else (*path, "density")
+            if d_path in bad or d_path in {q for q, _ in out}:
+                continue
             try:
-                checked_density(density, shape)
+                for sh in made:
+                    checked_density(fields.get("density", density), sh)
             except ValueError as exc:
-                out.append(((*path, "density"), str(exc).removeprefix("density: ")))
+                out.append((d_path, str(exc).removeprefix("density: ")))
     return out, shapes
+
+
+def _specs(b, path, version, out):
+    """(shape objects, their paths) of a body, or (None, []) with the problem noted."""
+    has_one, has_many = "shape" in b, "shapes" in b
+    if has_one and has_many:
+        out.append(((*path, "shapes"), "give shape or shapes, not both"))
+        return None, []
+    if not has_one and not has_many:
+        out.append(((*path, "shape"), "required field is missing"))
+        return None, []
+    if has_many:
+        if version < 2:
+            out.append(((*path, "shapes"), "shapes (several per body) need a version 2 scene"))
+            return None, []
+        specs = b["shapes"] if isinstance(b["shapes"], list) else []
+        return specs, [(*path, "shapes", k) for k in range(len(specs))]
+    return [b["shape"]], [(*path, "shape")]
+
+
+def _build_one(spec, path, version, out):
+    """(shapes, fixture fields, path) of one shape object, or None with the problem noted."""
+    if not isinstance(spec, dict):
+        return None
+    key, reason = shape_problem(spec, version) or (None, None)
+    if reason is not None:
+        out.append(((*path, key) if key else path, reason))
+        return None
+    kind = kind_of(spec)
+    try:
+        return make_shapes(spec), fixture_fields(spec), path
+    except ValueError as exc:
+        out.append(((*path, kind), str(exc)))
+        return None
 
 
 def name_problems(items, what: str, section: str, bad: Rejected) -> list:
@@ -275,7 +307,8 @@ def hand_problems(data, bad: Rejected):
     springs = data.get("springs") if isinstance(data.get("springs"), list) else []
     joints = data.get("joints") if isinstance(data.get("joints"), list) else []
     world = data.get("world") if isinstance(data.get("world"), dict) else {}
-    out, shapes = body_problems(bodies, bad)
+    version = data.get("version", fmt.VERSION)
+    out, shapes = body_problems(bodies, bad, version if version in fmt.VERSIONS else fmt.VERSION)
     out += name_problems(bodies, "body", "bodies", bad)
     out += name_problems(springs, "spring", "springs", bad)
     out += spring_problems(bodies, springs, bad)

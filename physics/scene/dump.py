@@ -15,6 +15,7 @@ import math
 from ..store import KIND_NAMES
 from . import schema as fmt
 from .joints import joint_dict
+from .shapes import shape_objects
 
 
 def _shortest(target: float, base: float, forward) -> float:
@@ -63,7 +64,11 @@ def body_dict(world, body, name) -> dict:
     s = body._s
     out = {"name": name} if name is not None else {}
     _put(out, "kind", KIND_NAMES[int(B.kind[s])], fmt.BODY_DEFAULTS["kind"])
-    out["shape"] = body.shape.spec
+    specs = shape_objects(body, _same)
+    if len(specs) == 1:
+        out["shape"] = specs[0]
+    else:
+        out["shapes"] = specs
     out["position"] = _origin(B.x[s], float(B.q[s]), B.com[s])
     _put(out, "angle", float(B.q[s]), fmt.BODY_DEFAULTS["angle"])
     _put(out, "velocity", _vec(B.v[s]), fmt.BODY_DEFAULTS["velocity"])

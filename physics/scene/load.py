@@ -9,6 +9,8 @@ from __future__ import annotations
 import math
 import os
 
+import numpy as np
+
 from . import schema as fmt
 from .checks import check
 from .joints import add_joints
@@ -68,10 +70,20 @@ def _build(data, shapes, source):
     return world
 
 
-def _add_body(world, b, shape, path, source):
-    kw = {**fmt.BODY_DEFAULTS, **{k: v for k, v in b.items() if k != "shape"}}
+def _add_body(world, b, fixtures, path, source):
+    """One body from its (shape, fixture fields) pairs: the body's material first, then each
+    fixture's own fields (a fixture's density moves the centre of mass: set before stepping)."""
+    kw = {**fmt.BODY_DEFAULTS, **{k: v for k, v in b.items() if k not in ("shape", "shapes")}}
     try:
-        return world.add_body(shape, **kw)
+        body = world.add_body([sh for sh, _ in fixtures], **kw)
+        weighed = False
+        for fx, (_, fields) in zip(body.fixtures, fixtures):
+            for key, value in fields.items():
+                setattr(fx, key, value)
+                weighed |= key == "density"
+        if weighed:  # place once more from the file's origin: x = origin + R com, as the saver assumes
+            world._place_body(body, np.array(kw["position"], dtype=np.float64))
+        return body
     except ValueError as exc:
         raise scene_error(source, [(path, str(exc))]) from None
 

@@ -14,15 +14,18 @@ import json
 from .. import options
 from ..store import KINDS as _KIND_CODES
 from .joints import JOINT_SCHEMA
+from .shapes import shape_schema
 
 FORMAT = "stelkropp.scene"
-VERSION = 1
+#: the version written; every version in VERSIONS is read (1: one shape per body)
+VERSION = 2
+VERSIONS = (1, 2)
 SCHEMA_FILE = "stelkropp.schema.json"
 
 # refuse before parsing / before validating, so a hostile file cannot eat the machine
 MAX_FILE_BYTES = 50 * 1024 * 1024
 MAX_BODIES = 1_000_000
-# the format nests 6 deep (bodies[i].shape.polygon[j][k]); deeper data is refused before the schema
+# the format nests 7 deep (bodies[i].shapes[j].polygon[k][l]); deeper data is refused before the schema
 MAX_DEPTH = 32
 # a SceneError lists at most this many problems (a hostile file can have millions)
 MAX_PROBLEMS = 100
@@ -77,29 +80,6 @@ def _name(doc):
     return {"type": "string", "minLength": 1, "description": doc}
 
 
-_SHAPE = {
-    "type": "object",
-    "description": "Exactly one of box, polygon, regular, circle.  Vertices are in body coordinates (metres).",
-    "minProperties": 1,
-    "maxProperties": 1,
-    "additionalProperties": False,
-    "properties": {
-        "box": _vec("[width, height] of a box centred on the body origin",
-                    prefixItems=[{"type": "number", "exclusiveMinimum": 0}] * 2),
-        "polygon": {"type": "array", "description": "convex polygon vertices [[x, y], ...], either winding, 3..64",
-                    "minItems": 3, "maxItems": 64, "items": {"$ref": "#/$defs/vec2"}},
-        "regular": {"type": "object", "description": "regular polygon with a flat bottom edge",
-                    "required": ["sides", "radius"], "additionalProperties": False,
-                    "properties": {"sides": {"type": "integer", "minimum": 3, "maximum": 64},
-                                   "radius": _num("circumradius (m)", exclusiveMinimum=0)}},
-        "circle": {"type": ["number", "object"],
-                   "description": "radius (m), or {radius, offset} for a disc off the body origin",
-                   "exclusiveMinimum": 0, "required": ["radius"], "additionalProperties": False,
-                   "properties": {"radius": _num("radius (m)", exclusiveMinimum=0),
-                                  "offset": _vec("centre in body coordinates", default=[0.0, 0.0])}},
-    },
-}
-
 _FRICTION = {
     "type": ["number", "object"],
     "description": "Coulomb coefficient: one number (static = dynamic) or {static, dynamic}",
@@ -111,15 +91,20 @@ _FRICTION = {
     "properties": {"static": _num("static coefficient", minimum=0), "dynamic": _num("dynamic coefficient", minimum=0)},
 }
 
+_SHAPE = shape_schema(_vec, _num, "#/$defs/friction")
+
 _BODY = {
     "type": "object",
-    "required": ["shape", "position"],
+    "description": "A rigid body: one shape, or (version 2) a list of shapes, each a fixture",
+    "required": ["position"],
     "additionalProperties": False,
     "properties": {
         "name": _name("unique body name (springs refer to bodies by name); optional"),
         "kind": {"enum": KINDS, "default": BODY_DEFAULTS["kind"],
                  "description": "dynamic, static (never moves) or kinematic (moves with its velocity only)"},
         "shape": {"$ref": "#/$defs/shape"},
+        "shapes": {"type": "array", "minItems": 1, "items": {"$ref": "#/$defs/shape"},
+                   "description": "the body's shapes (version 2; instead of shape)"},
         "position": _vec("body origin in world coordinates (m)"),
         "angle": _num("rotation about the body origin (rad, counter-clockwise)", default=0.0),
         "velocity": _vec("velocity of the centre of mass (m/s); ignored for static bodies", default=[0.0, 0.0]),
@@ -191,7 +176,7 @@ SCHEMA = {
     "properties": {
         "$schema": {"type": "string", "description": "path or URL of this schema (for editors)"},
         "format": {"const": FORMAT},
-        "version": {"const": VERSION},
+        "version": {"enum": list(VERSIONS)},
         "name": {"type": "string", "description": "title shown in the sandbox"},
         "description": {"type": "string", "description": "what the scene demonstrates"},
         "world": {"$ref": "#/$defs/world"},
