@@ -13,19 +13,23 @@ import numpy as np
 
 from physics.store import CIRCLE
 from physics.views import RenderData
-from physics.views import joint_rows  # plain numpy: no kernel
+from physics.views import fixture_rows, joint_rows  # plain numpy: no kernel
 
 
 def render_data(world) -> RenderData:
-    """The world's render data (same fields as ``world.render_data()``), without kernels."""
+    """The world's render data (same fields as ``world.render_data()``), without kernels: every
+    fixture's vertices and circle centre in world coordinates, fixture and body AABBs."""
     st = world._store
     n = st.bodies.n
     B = st.bodies.view
+    F = st.fixtures.view
+    nf = st.fixtures.n
     V = st.verts.view
     top = st.verts.top
-    body_of = np.repeat(np.arange(n), B.vcount[:n])
-    rows = np.concatenate([np.arange(s, s + c) for s, c in zip(B.vstart[:n], B.vcount[:n])]) \
-        if n else np.zeros(0, np.int64)
+    fb = F.body[:nf].astype(np.int64)
+    body_of = np.repeat(fb, F.vcount[:nf])
+    rows = np.concatenate([np.arange(s, s + c) for s, c in zip(F.vstart[:nf], F.vcount[:nf])]) \
+        if nf else np.zeros(0, np.int64)
     verts = np.zeros((top, 2))
     if len(rows):
         q = B.q[body_of]
@@ -33,20 +37,27 @@ def render_data(world) -> RenderData:
         loc = V.local[rows]
         verts[rows, 0] = B.x[body_of, 0] + c * loc[:, 0] - s * loc[:, 1]
         verts[rows, 1] = B.x[body_of, 1] + s * loc[:, 0] + c * loc[:, 1]
-    aabb = np.zeros((n, 4))
+    fixtures = fixture_rows(st)
     half = 0.5 * world.speculative_distance
-    for i in range(n):
-        if B.shape[i] == CIRCLE:
-            r = B.radius[i]
-            lo, hi = B.x[i] - r, B.x[i] + r
+    aabb = np.tile(np.array([np.inf, np.inf, -np.inf, -np.inf]), (n, 1))
+    for f in range(nf):
+        i, r = fb[f], F.radius[f]
+        if F.shape[f] == CIRCLE:
+            q = B.q[i]
+            c, s = np.cos(q), np.sin(q)
+            lx, ly = F.center[f]
+            centre = B.x[i] + (c * lx - s * ly, s * lx + c * ly)
+            fixtures["center"][f] = centre
+            lo, hi = centre - r, centre + r
         else:
-            v = verts[B.vstart[i]:B.vstart[i] + B.vcount[i]]
-            lo, hi = v.min(0), v.max(0)
-        aabb[i, :2], aabb[i, 2:] = lo - half, hi + half
+            v = verts[F.vstart[f]:F.vstart[f] + F.vcount[f]]
+            lo, hi = v.min(0) - r, v.max(0) + r
+        aabb[i, :2] = np.minimum(aabb[i, :2], lo - half)
+        aabb[i, 2:] = np.maximum(aabb[i, 2:], hi + half)
     ends = _spring_ends(B, st.springs.view, st.springs.n)
     return RenderData(verts, B.vstart[:n], B.vcount[:n], B.kind[:n], B.awake[:n], B.shape[:n], B.radius[:n],
                       B.x[:n], B.q[:n], B.com[:n], B.id[:n], aabb, ends, np.zeros((0, 2)), np.zeros((0, 2)),
-                      joint_rows(st))
+                      joint_rows(st), fixtures)
 
 
 def _spring_ends(B, S, ns):

@@ -15,6 +15,7 @@ import math
 import random
 import sys
 from pathlib import Path
+from types import SimpleNamespace
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
@@ -27,6 +28,7 @@ from physics.scene.schema import SCHEMA_FILE, schema_text  # noqa: E402
 
 from scene_kit import DT, G, body, box, ground, poly, r, scene, spring, static  # noqa: E402,F401
 from joint_scenes import JOINT_SCENES  # noqa: E402
+import shape_scenes  # noqa: E402
 
 
 # -- helpers ----------------------------------------------------------------
@@ -245,36 +247,6 @@ def mass_ratio():
                  bodies, camera={"center": [1.5, 2.0], "zoom": 60.0})
 
 
-def tumbler():
-    half, wall = 8.0, 0.5
-    bodies = [static(box(2 * half + 2 * wall, wall), 0.0, -0.5 * wall, "floor"),
-              static(box(2 * half + 2 * wall, wall), 0.0, 2 * half + 0.5 * wall, "lid"),
-              static(box(wall, 2 * half), -half - 0.5 * wall, half, "wall_left"),
-              static(box(wall, 2 * half), half + 0.5 * wall, half, "wall_right")]
-    # one body is one convex polygon and a kinematic body turns about its own centre, so the
-    # rotating part is a cross: two kinematic bars sharing the box's centre and angular velocity
-    arm, omega = 13.0, 0.6
-    for k, ang in enumerate((0.0, 0.5 * math.pi)):
-        bodies.append(body(box(arm, 0.4), 0.0, half, f"paddle{k}", kind="kinematic", angle=r(ang),
-                           angular_velocity=omega))
-    rng = random.Random(500)
-    spacing = 0.55
-    slots = [(-half + 0.4 + i * spacing, 0.4 + j * spacing) for j in range(29) for i in range(29)]
-    slots = [(x, y) for x, y in slots if abs(x) > 0.55 and abs(y - half) > 0.55 and x < half - 0.3
-             and y < 2 * half - 0.3]
-    rng.shuffle(slots)
-    for k, (x, y) in enumerate(sorted(slots[:500], key=lambda p: (p[1], p[0]))):
-        kind = k % 3
-        shape = ({"box": [0.4, 0.4]} if kind == 0 else {"circle": 0.21} if kind == 1
-                 else {"regular": {"sides": 6, "radius": 0.23}})
-        bodies.append(body(shape, x, y, None, friction=0.5))
-    return scene("Tumbler", "500 boxes, discs and hexagons in a closed static box stirred by a slowly "
-                            "rotating kinematic cross (two kinematic bars turning at 0.6 rad/s about the "
-                            "box's centre: a body is one convex polygon, and a kinematic body turns about its "
-                            "own centre, so the box itself cannot rotate as one body).",
-                 bodies, camera={"center": [0.0, 8.0], "zoom": 32.0})
-
-
 def rain():
     width, height = 40.0, 12.0
     bodies = [static(box(width + 2.0, 1.0), 0.0, -0.5, "floor"),
@@ -354,9 +326,12 @@ SCENES = {
     "pyramid": pyramid, "pyramid_large": pyramid_large, "card_house": card_house, "arch": arch,
     "dominoes": dominoes, "friction_ramp": friction_ramp, "restitution_row": restitution_row,
     "spring_playground": spring_playground, "chain_bridge": chain_bridge, "soft_body": soft_body,
-    "mass_ratio": mass_ratio, "tumbler": tumbler, "rain": rain, "default": default,
+    "mass_ratio": mass_ratio, "rain": rain, "default": default,
     **JOINT_SCENES,
 }
+# the scenes of bodies made of many shapes (the tumbler's drum among them): shape_scenes.py
+SCENES.update(shape_scenes.scenes(SimpleNamespace(scene=scene, body=body, static=static, box=box, r=r,
+                                                  ground=ground)))
 
 
 def canonical(data: dict) -> str:

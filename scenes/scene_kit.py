@@ -23,7 +23,7 @@ def pt(p):
 
 def scene(name, description, bodies, springs=(), camera=None, joints=(), **world):
     """A whole scene: world block (g = 10 m/s^2 down, dt 1/60 s, soft_step) and its contents."""
-    out = {"format": "stelkropp.scene", "version": 1, "name": name, "description": description,
+    out = {"format": "stelkropp.scene", "version": 2, "name": name, "description": description,
            "world": {"gravity": G, "dt": DT, "solver": "soft_step", "settings": {},
                      "integrator": "symplectic_euler", "sleeping": True, **world},
            "camera": camera or {"center": [0.0, 5.0], "zoom": 30.0},

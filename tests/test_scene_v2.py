@@ -1,7 +1,8 @@
 """Scene format version 2 (issue 13): several shapes per body, new shape kinds, per-shape
 fixture fields; version 1 files load exactly as before.
 
-- tests/data/scenes_v1/ holds the shipped scenes as they were saved in version 1; each loads
+- tests/data/scenes_v1/ holds the shipped scenes as they were saved in version 1 (issue 14's
+  joint scenes included); each loads
   to the same world (every body field bit for bit, vertices, shapes) as its version 2 file,
   whose 600-step end states tests/test_shipped_scenes.py compares with the record.  The
   tumbler is the exception: it was rebuilt as a real drum (issue 13), so only its version 1

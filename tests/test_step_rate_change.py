@@ -17,7 +17,7 @@ def tumbler_with_big_box():
     w = physics.load_scene(SCENES / "tumbler.json")
     for _ in range(120):
         w.step()
-    w.add_body(physics.Polygon.box(3, 3), position=(0, 2))
+    w.add_body(physics.Polygon.box(3, 3), position=(0, 6))  # inside the drum (centre (0, 8), 10 m across)
     for _ in range(30):
         w.step()
     return w

@@ -17,10 +17,10 @@ BYTES_PER_PAIR = 1000  # rough cost of one pair's contact rows (both tables and 
 
 
 def check_pairs(count: int, limit: int, n: int) -> None:
-    """SimulationError (stage 'broadphase') when ``count`` pairs of ``n`` bodies exceed ``limit``."""
+    """SimulationError (stage 'broadphase') when ``count`` pairs of ``n`` fixtures exceed ``limit``."""
     if count > limit:
         raise SimulationError(
-            f"the broad phase found {count:,} overlapping pairs among {n:,} bodies, more than the "
+            f"the broad phase found {count:,} overlapping pairs among {n:,} fixtures, more than the "
             f"world's max_pairs = {limit:,} (about {count * BYTES_PER_PAIR / 1e9:.1f} GB of contact rows); "
             "the step was refused: spread the bodies apart (many bodies piled in one place) or raise "
             "world.max_pairs", stage="broadphase")
