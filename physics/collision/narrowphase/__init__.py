@@ -3,6 +3,8 @@
 Modules: ``support`` (support mappings), ``simplex`` + ``gjk`` (distance,
 van den Bergen 1999), ``epa`` (penetration depth), ``sat`` (separating axes),
 ``manifold`` (reference/incident clipping, feature ids), ``circles``,
+``rounded`` (rounded polygons, capsules and segments: cores swept by a radius), ``chain``
+(one-sided chain segments with ghost vertices),
 ``pair`` (one polygon pair by either method), ``carry`` (per-point state
 carried from the previous step) and ``kernel`` (the whole pass).  The single-pair entries (``sat_query``, ``gjk_distance``,
 ``epa``, ``polygon_collide``, ``circle_circle``, ``polygon_circle``) take
