@@ -19,6 +19,7 @@ from __future__ import annotations
 import physics
 from physics import options
 from physics.collision import broadphase, narrowphase
+from physics.collision.broadphase.fixture_filter import filter_pairs
 
 
 def probe_world(solver: str, integrator: str = options.DEFAULT_INTEGRATOR, broadphase: str = "brute"):
@@ -39,7 +40,9 @@ def probe_world(solver: str, integrator: str = options.DEFAULT_INTEGRATOR, broad
 def _broad(bp):
     w = probe_world(options.DEFAULT_SOLVER, broadphase=bp)
     w._pipeline.refresh_geometry(w, w.dt)
-    broadphase.find_pairs(w._store.bodies.view, w._store.bodies.n, bp, w._pipeline._pairs)
+    s = w._store
+    n, pairs = broadphase.find_pairs(s.fixtures.view, s.fixtures.n, bp, w._pipeline._pairs)
+    filter_pairs(s.fixtures.view, pairs, n, w._pipeline._no_keys)
 
 
 def _narrow():
@@ -48,7 +51,7 @@ def _narrow():
     p._refresh(w, w.dt)
     p.refresh_geometry(w, w.dt)
     # no pairs: numba compiles for the argument types, so the broad phase is not needed here
-    narrowphase.collide(p.ctx, s.bodies.view, s.verts.view, p._pairs, 0, s.contacts)
+    narrowphase.collide(p.ctx, s.bodies.view, s.fixtures.view, s.verts.view, p._pairs, 0, s.contacts)
 
 
 def _solve(solver, integrator):
@@ -184,6 +187,6 @@ class unit_lock:
 
 
 def broadphase_of(world) -> str:
-    """The broad phase ``world``'s next step runs ("auto" resolved by its body count)."""
+    """The broad phase ``world``'s next step runs ("auto" resolved by its fixture count)."""
     from physics.collision.broadphase import resolve
-    return resolve(world.broadphase, world._store.bodies.n)
+    return resolve(world.broadphase, world._store.fixtures.n)

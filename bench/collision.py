@@ -150,7 +150,7 @@ def narrow_timings(npairs, min_time):
     rows, compile_s = [], {}
     for kind in ("box-box", "poly8-poly8", "circle-poly"):
         w, pairs = narrow_world(kind, npairs)
-        B, V, spec = w._bodies.view, w._verts.view, w.speculative_distance
+        B, F, V, spec = w._bodies.view, w._store.fixtures.view, w._verts.view, w.speculative_distance
         row = {"pair": kind, "pairs": npairs}
         for method in NARROWPHASES:
             contacts = ContactBuffer()
@@ -159,9 +159,9 @@ def narrow_timings(npairs, min_time):
             ctx.set("spec", spec)
             ctx.set("narrowphase", NARROWPHASES.index(method))
             t0 = time.perf_counter()
-            rows_made = narrowphase.collide(ctx, B, V, pairs, npairs, contacts)
+            rows_made = narrowphase.collide(ctx, B, F, V, pairs, npairs, contacts)
             compile_s[method] = max(compile_s.get(method, 0.0), time.perf_counter() - t0)
-            sec = time_call(lambda: narrowphase.collide(ctx, B, V, pairs, npairs, contacts), min_time)
+            sec = time_call(lambda: narrowphase.collide(ctx, B, F, V, pairs, npairs, contacts), min_time)
             row[method] = npairs / sec
             row[method + "_manifolds"] = rows_made
         rows.append(row)
