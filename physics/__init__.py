@@ -15,10 +15,11 @@ from .geometry.chain import Chain, ChainSegment
 from .geometry.decompose import decompose
 from .geometry.shapes import Circle, Polygon
 from .joint import Joint
+from .queries.hits import RayHit, ShapeHit
 from .spring import Spring
 from .world import World
 
-__all__ = ["World", "Body", "Fixture", "Spring", "Joint", "Polygon", "Circle", "Capsule", "Segment", "Chain", "ChainSegment", "decompose", "SceneError", "SimulationError",
+__all__ = ["World", "Body", "Fixture", "Spring", "Joint", "RayHit", "ShapeHit", "Polygon", "Circle", "Capsule", "Segment", "Chain", "ChainSegment", "decompose", "SceneError", "SimulationError",
            "load_scene", "save_scene", "solvers_available", "tune"]
 
 

@@ -42,13 +42,15 @@ class Pipeline:
         self.profile = StepProfile()
         self._params: dict[str, ModeParams] = {}
         self.n_awake = -1  # unknown: run everything
+        self.edits = 0  # edits so far (the query cache's key: physics/queries/cache.py)
         self.dirty = True  # the world's settings changed: refresh the context's settings
         self._dt = None
         self._no_keys = np.zeros(0, np.int64)
 
     def invalidate(self) -> None:
-        """Something was edited: the next step runs in full."""
+        """Something was edited: the next step runs in full (and queries rebuild their tree)."""
         self.n_awake = -1
+        self.edits += 1
 
     # -- the context ----------------------------------------------------
     def _refresh(self, world, dt: float) -> None:
