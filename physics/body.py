@@ -306,6 +306,25 @@ class Body:
         B.w[s] = w
         self._world._touched(s)
 
+    def apply_torque(self, torque) -> None:
+        """Add a torque (N m, counter-clockwise positive) for the next step; wakes the body.
+        ValueError for a non-finite torque or an accumulated torque that would overflow."""
+        t = self._B.tau[self._s] + finite_num(torque, "torque")
+        if not math.isfinite(t):
+            raise ValueError(f"torque: the torque accumulated on this body for the next step would overflow")
+        self._B.tau[self._s] = t
+        self._world._touched(self._s)
+
+    def apply_angular_impulse(self, impulse) -> None:
+        """Change the angular momentum at once by ``impulse`` (N m s); wakes the body.
+        ValueError for a non-finite impulse or an angular velocity that would overflow."""
+        s = self._s
+        w = self._B.w[s] + self._B.inv_i[s] * finite_num(impulse, "impulse")
+        if not math.isfinite(w):
+            raise ValueError("impulse: the angular velocity would overflow")
+        self._B.w[s] = w
+        self._world._touched(s)
+
     def world_vertices(self) -> np.ndarray:
         """The first shape's polygon (or capsule/segment core) vertices in world coordinates (empty for circles)."""
         verts = getattr(self.shape, "vertices", None)

@@ -22,6 +22,7 @@ from .world_bodies import BodiesMixin
 from .world_fixtures import FixturesMixin
 from .world_joints import JointsMixin
 from .world_queries import QueriesMixin
+from .world_batch import BatchMixin
 from .world_springs import SpringsMixin
 
 __all__ = ["World", "Contact", "RenderData", "STATE_DTYPE", "DT_MIN"]
@@ -43,7 +44,7 @@ def _tolerance(field: str, doc: str = ""):
     return property(get, put, doc=doc)
 
 
-class World(JointsMixin, QueriesMixin, BodiesMixin, FixturesMixin, SpringsMixin):
+class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, SpringsMixin):
     """A 2D rigid-body world.
 
     ``World(gravity=(0, -9.81), dt=1/60, solver="soft_step")``; add bodies with
