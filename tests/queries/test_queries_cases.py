@@ -59,7 +59,8 @@ def test_chain_segments_are_one_sided():
 def test_filters_select_fixtures_like_collisions():
     w, ground, ball, _ = _world()
     ball.fixtures[0].category = 0x4
-    assert [h.body for h in w.ray_cast((0, 10), (0, -10))] == [ground]
+    assert [h.body for h in w.ray_cast((0, 10), (0, -10))] == [ball, ground]  # default mask 0xFFFF sees 0x4
+    assert [h.body for h in w.ray_cast((0, 10), (0, -10), mask=0x3)] == [ground]
     assert [h.body for h in w.ray_cast((0, 10), (0, -10), mask=0x4)] == [ball]
     ball.fixtures[0].mask = 0x2
     assert w.ray_cast((0, 10), (0, -10), mask=0x4) == []
@@ -89,7 +90,7 @@ def test_query_aabb_is_exact_not_by_boxes():
 
 def test_overlap_and_shape_cast():
     w, ground, ball, cap = _world()
-    assert {f.body for f in w.overlap(physics.Circle(0.5), (0, 1.2))} == {ball}
+    assert {f.body for f in w.overlap(physics.Circle(0.5), (0, 1.6))} == {ball}
     assert {f.body for f in w.overlap(physics.Polygon.box(1, 1), (0, 1.5), 0.0)} == {ball}  # touches at y=2
     hit = w.shape_cast(physics.Polygon.box(1, 1), (-8, 5), 0.0, (0, -10))
     assert hit.body is ground and hit.fraction == pytest.approx(0.45, abs=1e-9) and hit.normal == pytest.approx((0, 1))
