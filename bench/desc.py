@@ -66,6 +66,45 @@ def shape_of(spec):
     raise ValueError(f"unsupported shape spec {spec!r}")
 
 
+class Compound:
+    """The shapes of a body with several fixtures, for the adapters' mass bookkeeping: the same
+    ``mass_properties`` / ``centroid`` interface as one shape (physics/geometry/mass.py sums the
+    parts with the parallel-axis theorem), each part with its own density."""
+
+    def __init__(self, parts):
+        self.parts = parts  # [(shape, fixture record)]
+
+    def mass_properties(self, density=None):
+        """(mass, centre of mass, inertia about it) of the parts at their fixtures' densities."""
+        from physics.geometry.mass import compound_mass
+        return compound_mass([s.mass_properties(f["density"]) for s, f in self.parts])
+
+    @property
+    def centroid(self):
+        """The centre of mass in body coordinates (m)."""
+        return self.mass_properties()[1]
+
+
+def fixture_records(b) -> list:
+    """[(shape, {density, mu_s, mu_d, restitution})] for every fixture of body ``b``: its
+    ``"shapes"`` list (scene format version 2; a concave outline decomposed, a chain split into
+    its segments) or its one ``"shape"``; a shape object's own material overrides the body's."""
+    from physics.scene.shapes import make_shapes
+    specs = b["shapes"] if "shapes" in b else [b["shape"]]
+    out = []
+    for spec in specs:
+        mu_s, mu_d = _friction({**b, **({"friction": spec["friction"]} if "friction" in spec else {})})
+        rec = dict(density=float(spec.get("density", b.get("density", 1.0))), mu_s=mu_s, mu_d=mu_d,
+                   restitution=float(spec.get("restitution", b.get("restitution", 0.0))))
+        out.extend((shape, rec) for shape in make_shapes(spec))
+    return out
+
+
+def _one_v1_shape(b) -> bool:
+    """True for a body of one version-1 shape with no fixture fields (``shape_of`` builds it)."""
+    return "shape" in b and len(b["shape"]) == 1 and next(iter(b["shape"])) in ("box", "polygon", "regular", "circle")
+
+
 def _friction(b):
     f = b.get("friction", 0.6)
     if isinstance(f, dict):
@@ -80,7 +119,9 @@ def body_records(desc) -> list[dict]:
     out = []
     for b in desc["bodies"]:
         mu_s, mu_d = _friction(b)
-        out.append(dict(name=b.get("name"), shape=shape_of(b["shape"]), kind=b.get("kind", "dynamic"),
+        parts = None if _one_v1_shape(b) else fixture_records(b)
+        shape = Compound(parts) if parts else shape_of(b["shape"])
+        out.append(dict(name=b.get("name"), shape=shape, parts=parts, kind=b.get("kind", "dynamic"),
                         position=tuple(map(float, b.get("position", (0.0, 0.0)))),
                         angle=float(b.get("angle", 0.0)),
                         velocity=tuple(map(float, b.get("velocity", (0.0, 0.0)))),

@@ -24,12 +24,13 @@ from .scenes import JOINT_BENCH, SCENES, scene_data
 from .speed import speed_scene
 
 
-def measure(names, steps=None) -> list[dict]:
-    """One row per scene: bodies, joints, ms/step of both engines, the ratio, the first step."""
+def measure(names, steps=None, prefix="joints") -> list[dict]:
+    """One row per scene: bodies, joints, ms/step of both engines, the ratio, the first step
+    (``prefix``: the bench scene family, ``joints_<name>`` or ``shapes_<name>``)."""
     cfg = Config("soft_step", {}, "soft_step", default=True)
     out = []
     for name in names:
-        key = f"joints_{name}"
+        key = f"{prefix}_{name}"
         plan = dict(SCENES[key].full)
         if steps:
             plan.update(steps=steps, warm=min(plan["warm"], steps // 3))
@@ -38,6 +39,7 @@ def measure(names, steps=None) -> list[dict]:
         ref = next((r for r in rows if r["engine"] == "pymunk"), {})
         data = scene_data(key).data
         out.append(dict(scene=name, bodies=len(data["bodies"]), joints=len(data.get("joints", [])),
+                        fixtures=sum(len(b.get("shapes", [0])) for b in data["bodies"]),
                         steps=ours.get("steps"), ms_ours=ours.get("ms_step"), ms_pymunk=ref.get("ms_step"),
                         ratio=ours.get("ratio_pymunk"), first_step_s=ours.get("first_step_s"),
                         status=ours.get("status")))

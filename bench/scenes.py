@@ -102,6 +102,13 @@ for _name in JOINT_BENCH:
     SCENES[f"joints_{_name}"] = BenchScene(f"scenes/{_name}.json (joints)", "max_penetration",
                                            dict(steps=300, chunk=20, warm=40), None, False, file=f"{_name}.json",
                                            keep_world=True, engines=("pymunk",))
+# the shipped scenes of bodies made of several shapes (issue 13): beside pymunk, which has compound
+# bodies, rounded polygons, capsules (radius segments) and smooth segment chains
+SHAPE_BENCH = ("compounds", "tumbler", "cup", "capsules", "terrain")
+for _name in SHAPE_BENCH:
+    SCENES[f"shapes_{_name}"] = BenchScene(f"scenes/{_name}.json (shapes)", "max_penetration",
+                                           dict(steps=300, chunk=20, warm=40), None, False, file=f"{_name}.json",
+                                           keep_world=True, engines=("pymunk",))
 ERROR_LABEL = {"top_drift": "top-box drift after the run (m)", "max_penetration": "max penetration at the end (m)"}
 
 

@@ -21,6 +21,7 @@ import numpy as np
 from ..desc import spring_ends
 from .base import Sim
 from .pymunk_joints import add_joints
+from .pymunk_shapes import add_parts
 
 PYMUNK_ITERATIONS = 10
 
@@ -50,16 +51,20 @@ class PymunkSim(Sim):
             body.position = r["position"]
             body.angle = r["angle"]
             shp = r["shape"]
-            if hasattr(shp, "vertices"):
+            if r["parts"]:  # several fixtures or a version-2 shape (bench/engines/pymunk_shapes.py)
+                sp.add(body)
+                add_parts(pymunk, sp, body, r, any_e)
+            elif hasattr(shp, "vertices"):
                 s = pymunk.Poly(body, [tuple(map(float, v)) for v in shp.vertices], radius=0.0)
             else:
                 s = pymunk.Circle(body, float(shp.radius), tuple(map(float, shp.offset)))
-            if kind == pymunk.Body.DYNAMIC:
-                s.density = r["density"]
-            s.friction = math.sqrt(r["mu_d"])
-            e = r["restitution"]
-            s.elasticity = 1.0 if (r["kind"] != "dynamic" and e == 0.0 and any_e) else e
-            sp.add(body, s)
+            if not r["parts"]:
+                if kind == pymunk.Body.DYNAMIC:
+                    s.density = r["density"]
+                s.friction = math.sqrt(r["mu_d"])
+                e = r["restitution"]
+                s.elasticity = 1.0 if (r["kind"] != "dynamic" and e == 0.0 and any_e) else e
+                sp.add(body, s)
             if kind != pymunk.Body.STATIC:
                 body.velocity = r["velocity"]
                 body.angular_velocity = r["angular_velocity"]
