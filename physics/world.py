@@ -99,6 +99,7 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         self.sleep_angular = 0.5
         self.time_to_sleep = 0.5
         self.max_pairs = MAX_PAIRS
+        self.energy_guard = 1.0
         self.gravity = gravity
         self.dt = dt
         self.integrator = integrator
@@ -148,6 +149,18 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
     @max_pairs.setter
     def max_pairs(self, value):
         self._max_pairs = whole(value, "max_pairs", lo=1)
+
+    @property
+    def energy_guard(self) -> float:
+        """How much a step may raise the total energy without external input (default 1; 0 turns
+        the guard off): from the last edit, energy may reach E0 + r (S0 + S/2) plus a push-out
+        allowance (physics/step/energy_guard.py); a step beyond it raises SimulationError at the
+        'solve' stage and is reverted.  A finite number >= 0 (ValueError otherwise)."""
+        return self._energy_guard
+
+    @energy_guard.setter
+    def energy_guard(self, value):
+        self._energy_guard = finite_num(value, "energy_guard", lo=0.0)
 
     @property
     def time(self) -> float:

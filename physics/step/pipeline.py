@@ -26,6 +26,7 @@ from ..errors import SimulationError
 from ..geometry.transform import update_geometry
 from ..store import DYNAMIC, KIND_NAMES, STATIC
 from .checkpoint import Checkpoint
+from .energy_guard import EnergyGuard
 from .context import ModeParams, StepContext
 from .frame import begin_step, end_step
 from .islands import Islands
@@ -37,6 +38,7 @@ class Pipeline:
         self._pairs = np.zeros((256, 2), dtype=np.int32)
         self.npairs = 0
         self._checkpoint = Checkpoint()
+        self._guard = EnergyGuard()
         self._islands = Islands()
         self.ctx = StepContext()
         self.profile = StepProfile()
@@ -142,6 +144,7 @@ class Pipeline:
         B = store.bodies.view
         ck = self._checkpoint
         ck.ensure(n)
+        self._guard.begin(world)
         begin_step(self.ctx.array, B, store.fixtures.view, store.verts.view, store.fixtures.n,
                    ck.X, ck.Q, ck.V, ck.W)
         self.profile.stamp("begin")
@@ -170,6 +173,9 @@ class Pipeline:
         k = end_step(self.ctx.array, B, store.springs.view, ck.bad, ck.why)
         if k:
             self._fail(world, ck.slots(k))
+        gained = self._guard.excess(world)
+        if gained is not None:
+            self._gained(world, *gained)
         self.profile.stamp("finish")
         self.profile.finish()
         world._time += dt
@@ -202,6 +208,17 @@ class Pipeline:
             f"{'y' if len(names) == 1 else 'ies'} ({', '.join(names[:8])}) during the '{stage}' stage "
             f"of solver '{world.solver}'; the world was reverted to the state before the step",
             bodies=names, stage=stage)
+        world.fault = err
+        raise err
+
+    def _gained(self, world, energy: float, limit: float) -> None:
+        """Revert and report a step that gained more energy than the guard allows."""
+        self._revert(world)
+        err = SimulationError(
+            f"step at t={world.time:.4f} s of solver '{world.solver}' raised the total energy to "
+            f"{energy:.4g} J, beyond the {limit:.4g} J a world without external input may reach "
+            "(physics/step/energy_guard.py; world.energy_guard); the world was reverted to the state "
+            "before the step", stage="solve")
         world.fault = err
         raise err
 

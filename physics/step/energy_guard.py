@@ -1,0 +1,123 @@
+"""The energy guard: a step whose world gains energy it cannot have been given is refused.
+
+Without external input (a user force, a moving kinematic body, a motor or mouse joint) a
+world's total energy E = kinetic + gravitational + elastic (springs) cannot grow: contacts,
+friction, springs' dampers and joints only conserve or dissipate it.  The solvers are not
+exact, so the guard allows a stated bound instead of zero.  From the reference state (the
+first step, or the first one after an edit or an external input) with energy E0 and energy
+scale S0 = KE + elastic + |gravitational| (all >= 0) and S the scale now,
+
+    E <= E0 + r (S0 + S / 2) + 1/2 sum_i m_i (c_i v_p)^2,
+
+- ``r`` (``world.energy_guard``, default 1): the energy present may grow by its own size.
+  Symplectic Euler's energy error on an oscillator is O(omega h) of its energy and the seed
+  modes keep omega h <= 1 per sub-step (integrators.LIMITS).  The S / 2 term is for a body
+  falling from rest (S0 = 0): symplectic Euler gains m g^2 h^2 / 2 per step while S grows
+  as m g^2 h^2 n^2, at least 3/2 m g^2 h^2 after one step.  An explosion has E ~ S, so it is
+  caught once S > 2 (E0 + r S0 + allowance); those issue 20 found were 1e3..1e24 times the
+  energy present.
+- the push-out allowance: bodies created or moved inside each other are pushed apart at up
+  to v_p = PUSH_SPEED per contact, i.e. body i with c_i contact manifolds may leave at c_i v_p
+  (n bodies heaped in one place fan out at up to (n - 1) / 2 times a mode's push-out speed;
+  soft_step's is 3 m/s, penalty's 2).  The largest allowance seen since the reference counts,
+  so a body pushed out earlier keeps its speed.
+
+An edit between steps is seen as the energy at a step's start differing from the one the last
+step ended with; it (and any step with external input) starts a new reference.  A step beyond
+the bound is reverted and raised as SimulationError at the 'solve' stage, like a non-finite
+step (pipeline.Pipeline).  ``world.energy_guard = 0`` turns the guard off.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..store import DYNAMIC, KINEMATIC
+from ..store.joints import BROKEN
+
+#: speed (m/s) per contact manifold at which push-out may separate overlapping bodies
+PUSH_SPEED = 10.0
+
+
+def energies(world) -> tuple[float, float]:
+    """(total energy E, its scale S = KE + elastic + |gravitational|) of the world in J."""
+    store = world._store
+    n = store.bodies.n
+    B = store.bodies.view
+    dyn = B.kind[:n] == DYNAMIC
+    with np.errstate(all="ignore"):
+        m = B.m[:n][dyn]
+        ke = 0.5 * float((m * (B.v[:n][dyn] ** 2).sum(1) + B.inertia[:n][dyn] * B.w[:n][dyn] ** 2).sum())
+        pe = -float((m[:, None] * B.x[:n][dyn] @ world._gravity).sum())
+        elastic = sum(0.5 * s.stiffness * (s.length - s.rest_length) ** 2 for s in world.springs)
+    return ke + pe + elastic, ke + elastic + abs(pe)
+
+
+def push_allowance(world) -> float:
+    """1/2 sum_i m_i (c_i PUSH_SPEED)^2 over the dynamic bodies in this step's contacts (J)."""
+    store = world._store
+    C = store.contacts.cur
+    nc = store.contacts.n
+    if nc == 0:
+        return 0.0
+    B = store.bodies.view
+    n = store.bodies.n
+    count = np.bincount(np.concatenate([C.a[:nc], C.b[:nc]]), minlength=n)[:n]
+    dyn = B.kind[:n] == DYNAMIC
+    return 0.5 * float((B.m[:n][dyn] * (count[dyn] * PUSH_SPEED) ** 2).sum())
+
+
+def external_input(world) -> bool:
+    """A user force or torque, a moving kinematic body or a working motor / mouse joint this step."""
+    store = world._store
+    n = store.bodies.n
+    B = store.bodies.view
+    if np.any(B.f[:n] != 0.0) or np.any(B.tau[:n] != 0.0):
+        return True
+    kin = B.kind[:n] == KINEMATIC
+    if np.any(B.v[:n][kin] != 0.0) or np.any(B.w[:n][kin] != 0.0):
+        return True
+    J = store.joints.view
+    nj = store.joints.n
+    return bool(nj and np.any((J.max_motor[:nj] > 0.0) & ((J.flags[:nj] & BROKEN) == 0)))
+
+
+class EnergyGuard:
+    """The reference energy and the bound of the current run without external input."""
+
+    def __init__(self):
+        self.last = math.nan  # energy at the end of the last accepted step (nan: none)
+        self.e0 = self.s0 = self.push = 0.0
+        self.active = False
+
+    def begin(self, world) -> None:
+        """Before a step: start a new reference after an edit or an external input."""
+        growth = world.energy_guard
+        if growth <= 0.0 or external_input(world):
+            self.active = False
+            self.last = math.nan
+            return
+        e, s = energies(world)
+        if not (e == self.last and self.active):
+            self.e0, self.s0, self.push = e, s, 0.0
+        self.active = True
+        self.start = e
+
+    def bound(self, world, scale: float) -> float:
+        """The most energy the world may have now, at energy scale ``scale`` (J)."""
+        self.push = max(self.push, push_allowance(world))
+        return self.e0 + world.energy_guard * (self.s0 + 0.5 * scale) + self.push
+
+    def excess(self, world) -> tuple[float, float] | None:
+        """After a step: (energy, bound) when the energy is beyond the bound, else None."""
+        if not self.active:
+            return None
+        e, s = energies(world)
+        limit = self.bound(world, s)
+        # rounding: E sums terms of size up to S
+        if e - limit > 1e-12 * (s + self.s0 + abs(self.e0)) + 1e-300:
+            self.last = self.start  # the step is reverted to the state it started from
+            return e, limit
+        self.last = e
+        return None
