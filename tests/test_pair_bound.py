@@ -58,3 +58,31 @@ def test_max_pairs_is_validated(value):
     with pytest.raises(ValueError, match="max_pairs"):
         w.max_pairs = value
     assert w.max_pairs == MAX_PAIRS
+
+
+def test_the_narrow_phase_refuses_more_contact_rows_than_its_bound():
+    """Handed more pairs than its bound, the narrow phase raises SimulationError at 'collide'
+    naming the contact rows, before its tables change (collision/narrowphase/limit.py)."""
+    import numpy as np
+
+    from physics.collision import narrowphase
+    w = coincident(20)
+    w.step()
+    s = w._store
+    rows = s.contacts.n
+    pairs = np.zeros((200, 2), dtype=np.int32)
+    with pytest.raises(SimulationError, match="contact rows") as info:
+        narrowphase.collide(w._pipeline.ctx, s.bodies.view, s.verts.view, pairs, 200, s.contacts, 150)
+    assert info.value.stage == "collide"
+    assert s.contacts.n == rows
+
+
+def test_contact_tables_grow_by_doubling_but_never_past_the_bound():
+    from physics.store.contacts import ContactBuffer
+    c = ContactBuffer(256)
+    c.ensure(300, 400)
+    assert c.capacity == 400  # doubling would have made 512
+    c.ensure(300)
+    assert c.capacity == 400
+    c.ensure(500)
+    assert c.capacity == 800  # without a bound: doubling

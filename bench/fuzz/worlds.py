@@ -21,6 +21,7 @@ class Plan:
     switch_at: int = -1
     switch_to: str = ""
     overlapping: bool = False  # bodies may start inside each other (push-out may add energy)
+    driven: bool = False  # a motor or mouse joint: external input, no energy invariant
     notes: list = field(default_factory=list)
 
 
@@ -75,9 +76,54 @@ def add_springs(rnd, w, bodies):
                      rest_length=None if rnd.random() < 0.5 else rnd.uniform(0.0, 2.0))
 
 
+JOINT_KINDS = ("revolute", "prismatic", "weld", "distance", "wheel", "motor", "mouse")
+DRIVEN = ("motor", "mouse")  # external input: the energy invariant does not apply
+
+
+def joint_params(rnd, kind: str, a) -> dict:
+    """Random parameters of one joint of ``kind`` on body ``a``: limits, springs 0..1e3 Hz, motors."""
+    hz = lambda: 0.0 if rnd.random() < 0.5 else log_uniform(rnd, (-1.0, 3.0))  # noqa: E731
+    zeta = lambda: rnd.choice([0.0, 0.7, 1.0, 10.0])  # noqa: E731
+    x, y = a.position
+    if kind == "revolute":
+        lo = rnd.uniform(-3, 0) if rnd.random() < 0.5 else None
+        return {"anchor": (x + rnd.uniform(-1, 1), y + rnd.uniform(-1, 1)), "lower_angle": lo,
+                "upper_angle": None if lo is None else lo + rnd.uniform(0, 3)}
+    if kind == "prismatic":
+        return {"anchor": (x, y), "axis": (rnd.uniform(-1, 1), 1.0), "lower": -1.0, "upper": rnd.uniform(-1, 2)}
+    if kind == "weld":
+        return {"anchor": (x, y), "linear_hertz": hz(), "angular_hertz": hz(), "damping_ratio": zeta()}
+    if kind == "distance":
+        return {"anchor_a": (x, y), "length": rnd.uniform(0.1, 3.0), "spring_hertz": hz(),
+                "spring_damping_ratio": zeta()}
+    if kind == "wheel":
+        return {"anchor": (x, y), "spring_hertz": hz(), "spring_damping_ratio": zeta()}
+    if kind == "motor":
+        return {"max_force": log_uniform(rnd, (0.0, 6.0)), "max_torque": log_uniform(rnd, (0.0, 6.0)),
+                "angular_offset": rnd.uniform(-3, 3)}
+    return {"target": (x + rnd.uniform(-2, 2), y + rnd.uniform(-2, 2)), "hertz": hz(),
+            "max_force": log_uniform(rnd, (0.0, 6.0))}
+
+
+def add_joints(rnd, w, bodies, plan) -> None:
+    """0-2 joints of any kind (world.add_joint) between random dynamic bodies or to the world;
+    a third of them breakable.  Motor and mouse joints mark the plan as driven."""
+    dyn = [b for b in bodies if b.kind == "dynamic"]
+    for _ in range(rnd.choice([0, 0, 0, 1, 2])):
+        kind = rnd.choice(JOINT_KINDS)
+        a = rnd.choice(dyn)
+        others = [b for b in dyn if b is not a]
+        b = None if kind == "mouse" or not others or rnd.random() < 0.4 else rnd.choice(others)
+        if kind == "motor" and b is None:
+            kind = "revolute"
+        extra = {"break_force": log_uniform(rnd, (0.0, 6.0))} if rnd.random() < 0.3 else {}
+        w.add_joint(kind, a, b, **joint_params(rnd, kind, a), **extra)
+        plan.driven = plan.driven or kind in DRIVEN
+
+
 def build(rnd) -> Plan:
-    """A random world in a random mode (gravity on or off) and its plan (5-30 steps, half the
-    cases switching mode mid-run)."""
+    """A random world in a random mode (gravity on or off) with springs and joints, and its plan
+    (5-30 steps, half the cases switching mode mid-run)."""
     modes = physics.solvers_available()
     w = physics.World(gravity=rnd.choice([(0.0, 0.0), (0.0, -9.81)]), solver=rnd.choice(modes),
                       dt=log_uniform(rnd, DT), sleeping=rnd.random() < 0.5)
@@ -86,6 +132,7 @@ def build(rnd) -> Plan:
     add_springs(rnd, w, bodies)
     steps = rnd.randint(5, 30)
     plan = Plan(w, steps, overlapping=overlapping)
+    add_joints(rnd, w, bodies, plan)
     if rnd.random() < 0.5:
         plan.switch_at = rnd.randrange(steps)
         plan.switch_to = rnd.choice(modes)

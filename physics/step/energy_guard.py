@@ -34,7 +34,7 @@ import math
 import numpy as np
 
 from ..store import DYNAMIC, KINEMATIC
-from ..store.joints import BROKEN
+from ..store.joints import BROKEN, MOTOR
 
 #: speed (m/s) per contact manifold at which push-out may separate overlapping bodies
 PUSH_SPEED = 10.0
@@ -80,7 +80,10 @@ def external_input(world) -> bool:
         return True
     J = store.joints.view
     nj = store.joints.n
-    return bool(nj and np.any((J.max_motor[:nj] > 0.0) & ((J.flags[:nj] & BROKEN) == 0)))
+    if not nj:
+        return False
+    working = (J.max_motor[:nj] > 0.0) | ((J.kind[:nj] == MOTOR) & (J.max_torque[:nj] > 0.0))
+    return bool(np.any(working & ((J.flags[:nj] & BROKEN) == 0)))
 
 
 class EnergyGuard:

@@ -114,7 +114,7 @@ class Pipeline:
         # fixtures of one body, filtered pairs and joined bodies never collide
         self.npairs = int(filter_pairs(F, self._pairs, self.npairs, keys))
         self.profile.stamp("broadphase")
-        narrowphase.collide(self.ctx, B, F, s.verts.view, self._pairs, self.npairs, s.contacts)
+        narrowphase.collide(self.ctx, B, F, s.verts.view, self._pairs, self.npairs, s.contacts, world.max_pairs)
         self.ctx.set("nc", s.contacts.n)
         self.profile.stamp("narrowphase")
 

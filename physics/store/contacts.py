@@ -77,9 +77,11 @@ class ContactBuffer:
     def capacity(self) -> int:
         return len(self.cur.a)
 
-    def ensure(self, need: int) -> None:
+    def ensure(self, need: int, limit: int | None = None) -> None:
+        """Room for ``need`` rows: the capacity doubles, but never beyond ``limit`` rows
+        (collision/narrowphase/limit.py) unless ``need`` itself is larger."""
         if need > self.capacity:
-            cap = max(need, 2 * self.capacity)
+            cap = max(need, 2 * self.capacity if limit is None else min(2 * self.capacity, limit))
             self.cur = Contacts(**allocate(CONTACT_FIELDS, cap))
             old = self.prev
             self.prev = Contacts(**allocate(CONTACT_FIELDS, cap))

@@ -16,6 +16,7 @@ from .circles import circle_circle, polygon_circle
 from .epa import epa
 from .gjk import gjk_distance
 from .kernel import collide_kernel
+from .limit import check_rows
 from .pair import GJK, METHODS, SAT, polygon_collide
 from .sat import sat_query
 
@@ -23,15 +24,17 @@ __all__ = ["collide", "sat_query", "gjk_distance", "epa", "polygon_collide",
            "circle_circle", "polygon_circle", "SAT", "GJK", "METHODS"]
 
 
-def collide(ctx, B, F, V, pairs, npairs, contacts) -> int:
+def collide(ctx, B, F, V, pairs, npairs, contacts, limit: int = 1_000_000) -> int:
     """Manifolds for the fixture pairs ``pairs[:npairs]`` into ``contacts.cur``; returns the row count.
 
     ``ctx`` is the step context (dt, speculative distance, narrow-phase code).
     The previous step's rows become ``contacts.prev`` and carry their point
-    state (impulses for warm starting) over to the new ones.
+    state (impulses for warm starting) over to the new ones.  More than ``limit`` rows
+    (world.max_pairs) raise SimulationError at the 'collide' stage (limit.py).
     """
+    check_rows(int(npairs), limit)  # refused before the tables change (limit.py)
     contacts.swap()
-    contacts.ensure(int(npairs))
+    contacts.ensure(int(npairs), limit)
     contacts.n = int(collide_kernel(ctx.array, B, F, V, pairs, int(npairs), contacts.cur, contacts.prev,
                                     int(contacts.n_prev)))
     return contacts.n
