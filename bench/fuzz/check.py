@@ -91,12 +91,12 @@ def warm_up() -> None:
                 pass
         del g
     for i in range(WARM_CASES):  # the paths random worlds take (joint kinds, sleeping, switches)
-        run_case(i, base=-1, limit=math.inf)
+        run_case(i, base=-1, seconds=math.inf)
 
 
-def run_case(seed: int, base: int = 0, limit: float = CASE_SECONDS) -> dict:
+def run_case(seed: int, base: int = 0, seconds: float = CASE_SECONDS) -> dict:
     """One case from random.Random(f"world:{base}:{seed}"); returns {outcome, detail, mode, steps};
-    ``limit``: seconds after which the case counts as slow."""
+    ``seconds``: time after which the case counts as slow."""
     rnd = random.Random(f"world:{base}:{seed}")
     t0 = time.perf_counter()
     try:
@@ -129,6 +129,6 @@ def run_case(seed: int, base: int = 0, limit: float = CASE_SECONDS) -> dict:
         if not plan.driven and e - limit > 1e-9 * (scale + bound.s0 + abs(bound.e0)):
             return {**out, "outcome": "energy_gain", "steps": k + 1,
                     "detail": f"energy {e:.4g} J > bound {limit:.4g} J at step {k + 1}"}
-        if time.perf_counter() - t0 > limit:
-            return {**out, "outcome": "slow", "steps": k + 1, "detail": f"over {limit} s"}
+        if time.perf_counter() - t0 > seconds:
+            return {**out, "outcome": "slow", "steps": k + 1, "detail": f"over {seconds} s"}
     return {**out, "outcome": "ok", "steps": plan.steps}
