@@ -7,7 +7,7 @@ One step, as data flowing through it (docs/internals.md):
       -> narrow phase (manifolds; per-point state carried from the last step)
       -> solve (the solver mode: forces, contacts, springs, integration)
       -> islands (sleep)
-      -> finish (finite check: revert and report, or clear user forces)
+      -> finish (finite check, then the energy guard: revert and report, or clear user forces)
 
 Stages a world does not need are not run: nothing at all while every body
 sleeps, no sleep update with sleeping off.  Every stage reads the step context
