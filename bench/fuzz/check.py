@@ -20,7 +20,7 @@ import numpy as np
 
 import physics
 from physics.errors import SimulationError
-from physics.step.energy_guard import push_allowance
+from physics.step.energy_guard import noise_floor, push_allowance
 
 from .worlds import build
 
@@ -41,7 +41,7 @@ def energies(w) -> tuple[float, float]:
 
 class EnergyBound:
     """The stated bound (physics/step/energy_guard.py, world.energy_guard = r): from the start,
-    E <= E0 + r (S0 + S / 2) + the largest push-out allowance of any step so far.  Energies are
+    E <= E0 + r (S0 + S / 2) + the largest push-out allowance of any step so far + the noise floor.  Energies are
     computed here, not by the guard, so a guard that misses its own bound is found."""
 
     def __init__(self, w):
@@ -51,7 +51,7 @@ class EnergyBound:
 
     def limit(self, w, scale: float) -> float:
         self.push = max(self.push, push_allowance(w))
-        return self.e0 + self.r * (self.s0 + 0.5 * scale) + self.push
+        return self.e0 + self.r * (self.s0 + 0.5 * scale) + self.push + noise_floor(w, w.dt)
 
 
 def reason(exc: SimulationError) -> str:

@@ -42,7 +42,7 @@ def section(s: dict) -> str:
         "Invariants (bench/fuzz/check.py): only ValueError (building) or SimulationError naming its stage "
         "with world.fault set; no non-finite state or energy after an accepted step; without a motor or "
         "mouse joint, the total energy never above the energy guard's stated bound E0 + (S0 + S/2) + "
-        "push-out allowance (physics/step/energy_guard.py), computed independently; no case over 60 s. "
+        "push-out allowance + noise floor (physics/step/energy_guard.py), computed independently; no case over 60 s. "
         "Refused steps are counted by reason (energy_guard: the guard refused a step that gained "
         "energy; substeps: a spring or contact too stiff for max_substeps; nonfinite).", "",
         "| cases | accepted runs | refused steps (SimulationError) | ValueError | crashes | silent non-finite "

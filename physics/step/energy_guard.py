@@ -7,7 +7,7 @@ exact, so the guard allows a stated bound instead of zero.  From the reference s
 first step, or the first one after an edit or an external input) with energy E0 and energy
 scale S0 = KE + elastic + |gravitational| (all >= 0) and S the scale now,
 
-    E <= E0 + r (S0 + S / 2) + 1/2 sum_i m_i (c_i v_p)^2,
+    E <= E0 + r (S0 + S / 2) + 1/2 sum_i m_i (c_i v_p)^2 + F,
 
 - ``r`` (``world.energy_guard``, default 1): the energy present may grow by its own size.
   Symplectic Euler's energy error on an oscillator is O(omega h) of its energy and the seed
@@ -21,6 +21,11 @@ scale S0 = KE + elastic + |gravitational| (all >= 0) and S the scale now,
   (n bodies heaped in one place fan out at up to (n - 1) / 2 times a mode's push-out speed;
   soft_step's is 3 m/s, penalty's 2).  The largest allowance seen since the reference counts,
   so a body pushed out earlier keeps its speed.
+
+- the noise floor F = sum_i m_i (|g| slop + (|g| dt)^2 / 2 + v_n^2 / 2), v_n = 1 mm/s: a body
+  lifted by the linear slop, the speed of one step's fall, and 1 mm/s are solver noise, not
+  a gain.  Without it a welded cantilever at rest near y = 0 (E0 = S0 = 0, energies ~1e-32 J)
+  was refused for rounding, and soft joints and contacts store energy the sum leaves out.
 
 An edit between steps is seen as the energy at a step's start differing from the one the last
 step ended with; it (and any step with external input) starts a new reference.  A step beyond
@@ -52,6 +57,19 @@ def energies(world) -> tuple[float, float]:
         pe = -float((m[:, None] * B.x[:n][dyn] @ world._gravity).sum())
         elastic = sum(0.5 * s.stiffness * (s.length - s.rest_length) ** 2 for s in world.springs)
     return ke + pe + elastic, ke + elastic + abs(pe)
+
+
+NOISE_SPEED = 1e-3  # m/s
+
+
+def noise_floor(world, dt: float) -> float:
+    """F = sum_i m_i (|g| slop + (|g| dt)^2 / 2 + NOISE_SPEED^2 / 2) over the dynamic bodies (J)."""
+    store = world._store
+    n = store.bodies.n
+    B = store.bodies.view
+    mass = float(B.m[:n][B.kind[:n] == DYNAMIC].sum())
+    g = float(np.hypot(*world._gravity))
+    return mass * (g * world.linear_slop + 0.5 * (g * dt) ** 2 + 0.5 * NOISE_SPEED ** 2)
 
 
 def push_allowance(world) -> float:
@@ -107,17 +125,17 @@ class EnergyGuard:
         self.active = True
         self.start = e
 
-    def bound(self, world, scale: float) -> float:
-        """The most energy the world may have now, at energy scale ``scale`` (J)."""
+    def bound(self, world, scale: float, dt: float) -> float:
+        """The most energy the world may have now, at energy scale ``scale`` after a step of ``dt`` (J)."""
         self.push = max(self.push, push_allowance(world))
-        return self.e0 + world.energy_guard * (self.s0 + 0.5 * scale) + self.push
+        return self.e0 + world.energy_guard * (self.s0 + 0.5 * scale) + self.push + noise_floor(world, dt)
 
-    def excess(self, world) -> tuple[float, float] | None:
+    def excess(self, world, dt: float) -> tuple[float, float] | None:
         """After a step: (energy, bound) when the energy is beyond the bound, else None."""
         if not self.active:
             return None
         e, s = energies(world)
-        limit = self.bound(world, s)
+        limit = self.bound(world, s, dt)
         # rounding: E sums terms of size up to S
         if e - limit > 1e-12 * (s + self.s0 + abs(self.e0)) + 1e-300:
             self.last = self.start  # the step is reverted to the state it started from

@@ -173,7 +173,7 @@ class Pipeline:
         k = end_step(self.ctx.array, B, store.springs.view, ck.bad, ck.why)
         if k:
             self._fail(world, ck.slots(k))
-        gained = self._guard.excess(world)
+        gained = self._guard.excess(world, dt)
         if gained is not None:
             self._gained(world, *gained)
         self.profile.stamp("finish")
