@@ -35,7 +35,8 @@ def _bodies(app):
                     "velocity": b.velocity, "angular_velocity": b.angular_velocity,
                     "screen": [float(sp[0]), float(app.height - sp[1])],
                     "shape": b.shape.kind, "density": b.density,
-                    "vertices": 0 if isinstance(b.shape, physics.Circle) else len(b.shape.vertices)})
+                    "vertices": 0 if isinstance(b.shape, physics.Circle) else len(b.shape.vertices),
+                    "fixtures": [f.shape.kind for f in b.fixtures], "mass": b.mass})
     return out
 
 

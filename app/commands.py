@@ -10,6 +10,7 @@ import time
 
 import physics
 
+from .fixture_specs import BODY_FIELDS, body_spec, glued_spec, make_body, unglued_specs
 from .joint_specs import joint_fields, make_joint, param_value
 
 
@@ -46,22 +47,12 @@ class Refs:
         self._table(item)[item.id] = ref
 
 
-BODY_FIELDS = ("kind", "position", "angle", "velocity", "angular_velocity", "density", "restitution",
-               "friction", "name")
 SPRING_FIELDS = ("anchor_a", "anchor_b", "stiffness", "damping", "rest_length", "name")
-
-
-def body_spec(b) -> dict:
-    return {"shape": b.shape, **{f: getattr(b, f) for f in BODY_FIELDS}}
 
 
 def spring_spec(sp, refs: Refs) -> dict:
     return {"a": refs.of(sp.body_a), "b": None if sp.body_b is None else refs.of(sp.body_b),
             **{f: getattr(sp, f) for f in SPRING_FIELDS}}
-
-
-def make_body(world, spec: dict):
-    return world.add_body(spec["shape"], **{f: spec[f] for f in BODY_FIELDS})
 
 
 def joint_spec(j, refs: Refs) -> dict:
@@ -268,6 +259,76 @@ class SetWorld(Command):
         if isinstance(other, SetWorld) and other.label == self.label and other.t - self.t < 1.5:
             self.new = other.new
             self.t = other.t
+            return True
+        return False
+
+
+class Glue(Command):
+    """Bodies -> one body holding all their fixtures where they are (app.fixture_specs.glued_spec);
+    the springs and joints on them go with the old bodies (undo brings everything back)."""
+
+    def __init__(self, app, bodies):
+        self.remove = RemoveBodies(app, bodies)
+        self.add = AddBody(glued_spec(bodies), "glue")
+        self.label = f"glue {len(bodies)} bodies"
+
+    def do(self, app):
+        self.remove.do(app)
+        try:
+            self.add.do(app)
+        except ValueError:
+            self.remove.undo(app)
+            raise
+
+    def undo(self, app):
+        self.add.undo(app)
+        self.remove.undo(app)
+
+
+class Unglue(Command):
+    """A body -> one body per fixture (a chain stays whole), each moving as its part did."""
+
+    def __init__(self, app, body):
+        self.remove = RemoveBodies(app, [body])
+        self.adds = [AddBody(spec, "unglue") for spec in unglued_specs(body)]
+        self.label = "unglue body"
+
+    def do(self, app):
+        self.remove.do(app)
+        for a in self.adds:
+            a.do(app)
+
+    def undo(self, app):
+        for a in reversed(self.adds):
+            a.undo(app)
+        self.remove.undo(app)
+
+    @property
+    def bodies(self):
+        return [a.ref.obj for a in self.adds]
+
+
+class SetFixture(Command):
+    """``fixture.field = value`` on the ``index``-th fixture of a body (held by its Ref, so the
+    edit survives the body being deleted and brought back).  Consecutive edits merge."""
+
+    def __init__(self, app, body, index: int, field: str, value):
+        self.ref = app.refs.of(body)
+        self.index, self.field, self.new = index, field, value
+        self.old = getattr(body.fixtures[index], field)
+        self.t = time.monotonic()
+        self.label = f"set fixture {index} {field}"
+
+    def do(self, app):
+        setattr(self.ref.obj.fixtures[self.index], self.field, self.new)   # ValueError: nothing changed
+
+    def undo(self, app):
+        setattr(self.ref.obj.fixtures[self.index], self.field, self.old)
+
+    def merge(self, other) -> bool:
+        if (isinstance(other, SetFixture) and other.ref is self.ref and (other.index, other.field) ==
+                (self.index, self.field) and other.t - self.t < 1.5):
+            self.new, self.t = other.new, other.t
             return True
         return False
 

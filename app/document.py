@@ -5,7 +5,8 @@ from pathlib import Path
 
 import physics
 
-from .commands import BODY_FIELDS, SPRING_FIELDS, History, Refs
+from .commands import SPRING_FIELDS, History, Refs
+from .fixture_specs import body_spec, make_body
 from .joint_specs import joint_fields, make_joint
 
 WORLD_FIELDS = ("gravity", "dt", "integrator", "broadphase", "narrowphase", "sleeping")
@@ -20,7 +21,7 @@ def snapshot(world, skip_joints=()) -> dict:
         "world": {f: getattr(world, f) for f in WORLD_FIELDS},
         "solver": world.solver,
         "settings": {name: world.settings_for(name).to_dict() for name in world.solvers},
-        "bodies": [{"shape": b.shape, **{f: getattr(b, f) for f in BODY_FIELDS}} for b in bodies],
+        "bodies": [body_spec(b) for b in bodies],
         "springs": [{"a": index[sp.body_a.id], "b": None if sp.body_b is None else index[sp.body_b.id],
                      **{f: getattr(sp, f) for f in SPRING_FIELDS}} for sp in world.springs],
         "joints": [{"kind": j.kind, "a": index[j.body_a.id], "b": None if j.body_b is None else index[j.body_b.id],
@@ -37,7 +38,7 @@ def restore(snap: dict):
             w.settings_for(name).update(values)
         except (ValueError, KeyError, ImportError):
             pass
-    bodies = [w.add_body(b["shape"], **{f: b[f] for f in BODY_FIELDS}) for b in snap["bodies"]]
+    bodies = [make_body(w, b) for b in snap["bodies"]]
     for s in snap["springs"]:
         w.add_spring(bodies[s["a"]], None if s["b"] is None else bodies[s["b"]],
                      **{f: s[f] for f in SPRING_FIELDS})

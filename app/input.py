@@ -118,7 +118,8 @@ class SceneInput:
         if button in (mouse.RIGHT, mouse.MIDDLE):
             start, self.panning = self.panning, None
             if button == mouse.RIGHT and start is not None and abs(x - start[0]) + abs(y - start[1]) <= 3:
-                self.context_menu()
+                if not self.editor.tool.right_click(tuple(self.editor.cursor)):   # a tool's own use first
+                    self.context_menu()
             return
         if button == mouse.LEFT and self.tool_active:
             self.tool_active = False

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from pyglet.window import key as K
 
+from .gluing import glue_selection, unglue_selection
+
 
 def _overlay(name):
     def toggle(app, shift):
@@ -36,6 +38,7 @@ SHORTCUTS = (
     (K.D, True, lambda app, shift: app.editor.duplicate_selection()),
     (K.C, True, lambda app, shift: app.editor.copy_selection()),
     (K.V, True, lambda app, shift: app.editor.paste()),
+    (K.G, True, lambda app, shift: unglue_selection(app.editor) if shift else glue_selection(app.editor)),
     (K.SPACE, False, lambda app, shift: app.sim.toggle_run()),
     (K.S, False, lambda app, shift: app.sim.step_once()),
     (K.R, False, lambda app, shift: app.files.request_reset()),

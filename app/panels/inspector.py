@@ -8,6 +8,7 @@ from imgui_bundle import imgui
 import physics
 
 from .base import Section, record
+from .fixture_inspector import body_text, draw_fixtures
 from .joint_inspector import draw_joint
 from .plot_tab import probe_checkboxes
 from ..render.colors import PALETTE
@@ -61,10 +62,7 @@ class InspectorSection(Section):
         self.app.editor.set_property(item, field, value)
 
     def body(self, b):
-        shape = b.shape
-        desc = f"circle r={shape.radius:.3g}" if isinstance(shape, physics.Circle) else \
-            f"polygon, {len(shape.vertices)} vertices"
-        imgui.text(f"Body {b.name or b.id}: {desc}")
+        imgui.text(f"Body {b.name or b.id}: {body_text(b)}")
         imgui.text_colored(DIM, f"mass {b.mass:.4g} kg   inertia {b.inertia:.4g}   {'awake' if b.awake else 'asleep'}")
         self.error()
         probe_checkboxes(self.app, b)          # near the top: the panel may not show its end
@@ -104,6 +102,7 @@ class InspectorSection(Section):
         ch, v = imgui.input_text("name", b.name or "", ENTER)
         if ch:
             self.edit(b, "name", v or None)
+        draw_fixtures(self, b)
 
     def colour(self, b):
         """The body's own fill colour: a palette swatch, any colour (the editor), or the default."""

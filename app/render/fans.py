@@ -29,14 +29,21 @@ class Fans:
             self._key = key
         return self._edge_body, self._ia, self._ib
 
-    def build(self, rd, fill, line):
+    def build(self, rd, fill, line, parts=None):
         """Polygons as a fan of (centre, v_i, v_i+1) per edge; the centre vertex carries its
-        distance to the edge so the shader can draw the outline.  ``fill``/``line``: (N, 4)."""
-        eb, ia, ib = self.topology(rd.vstart, rd.vcount)
+        distance to the edge so the shader can draw the outline.  ``fill``/``line``: (N, 4) per
+        body.  ``parts`` (app.render.parts.Parts): draw each fixture by itself (a compound body's
+        pieces, rounded outlines); without it, one polygon per body as in render data."""
+        if parts is None:
+            V, vstart, vcount, centre, owner = rd.vertices, rd.vstart, rd.vcount, rd.center, None
+        else:
+            V, vstart, vcount, centre, owner = parts.vertices, parts.vstart, parts.vcount, parts.centre, parts.body
+        eb, ia, ib = self.topology(vstart, vcount)
         if not len(eb):
             return np.zeros((0, 11), F32)
-        V = rd.vertices
-        c, a, b = rd.center[eb], V[ia], V[ib]
+        c, a, b = centre[eb], V[ia], V[ib]
+        if owner is not None:
+            eb = owner[eb]
         e = b - a
         el = np.hypot(e[:, 0], e[:, 1])
         el[el == 0] = 1.0

@@ -21,6 +21,7 @@ from .fans import Fans
 from .geometry import arrows, coils, discs, grid_lines, rects, thick_segments
 from .gl import Layer, load_program
 from .joints import joint_lines, joint_markers
+from .parts import Parts
 
 F32 = np.float32
 
@@ -87,16 +88,35 @@ class Renderer:
         ``velocities``: (N, 2) body velocities in render-data order when the arrows are on."""
         t0 = time.perf_counter()
         fill, line = self.body_colors(rd, decor)
-        self.polys.upload(self.polygon_fans(rd, fill, line))
-        ci = np.nonzero(rd.vcount == 0)[0]
-        self.circles.upload(discs(rd.center[ci], rd.radius[ci], rd.angle[ci], 1.0, fill[ci], line[ci]))
-        self.lines.upload(self.line_layer(rd, camera.scale, overlays, decor, spring_ids, quadtree, velocities))
+        parts = Parts(rd) if getattr(rd, "fixtures", None) is not None else None
+        self.polys.upload(self.fans.build(rd, fill, line, parts))
+        self.circles.upload(self.circle_layer(rd, parts, fill, line))
+        shape_lines = self.shape_lines(parts, line, camera.scale)
+        self.lines.upload(np.concatenate([shape_lines, self.line_layer(rd, camera.scale, overlays, decor, spring_ids,
+                                                                       quadtree, velocities)]))
         self.markers.upload(self.marker_layer(rd, camera.scale, overlays, decor))
         self.last_upload_ms = (time.perf_counter() - t0) * 1e3
 
     def polygon_fans(self, rd, fill, line):
-        """The polygon bodies' fans (see :class:`app.render.fans.Fans`)."""
-        return self.fans.build(rd, fill, line)
+        """The polygon fixtures' fans (see :class:`app.render.fans.Fans`)."""
+        parts = Parts(rd) if getattr(rd, "fixtures", None) is not None else None
+        return self.fans.build(rd, fill, line, parts)
+
+    @staticmethod
+    def circle_layer(rd, parts, fill, line):
+        """Circle fixtures as discs at their own centres, turning with their body (the spoke)."""
+        if parts is None:
+            ci = np.nonzero(rd.vcount == 0)[0]
+            return discs(rd.center[ci], rd.radius[ci], rd.angle[ci], 1.0, fill[ci], line[ci])
+        b = parts.circle_body
+        return discs(parts.circle_centre, parts.circle_radius, rd.angle[b], 1.0, fill[b], line[b])
+
+    @staticmethod
+    def shape_lines(parts, line, scale):
+        """Segments and chain segments (no area): lines in their body's outline colour."""
+        if parts is None or not len(parts.line_body):
+            return np.zeros((0, 7), F32)
+        return thick_segments(parts.line_p0, parts.line_p1, 2.5, line[parts.line_body], scale)
 
     @staticmethod
     def line_layer(rd, scale, overlays, decor, spring_ids, quadtree, velocities):

@@ -29,6 +29,7 @@ class ToolOptions:
         self.wheel_hertz = 4.0           # wheel tool: suspension frequency (Hz) and damping ratio
         self.wheel_damping_ratio = 0.7
         self.slider_limits = True        # slider tool: the dragged segment is the travel
+        self.capsule_radius = 0.25       # capsule tool: the radius (m) of a dragged capsule
 
 
 def body_args(opts: ToolOptions, position, angle=0.0) -> dict:
@@ -61,6 +62,10 @@ class Tool:
 
     def release(self, p):
         """Left button released at ``p``."""
+
+    def right_click(self, p) -> bool:
+        """A right click without a drag at ``p`` (True: the tool used it, no context menu)."""
+        return False
 
     def key(self, symbol) -> bool:
         """A key the tool handles itself (True: consumed, no shortcut fires)."""

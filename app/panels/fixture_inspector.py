@@ -1,0 +1,102 @@
+"""The inspector's fixture part (issue 13): a body's fixtures listed, each one's material
+(density, restitution, friction) and filter (category and mask bits, group, name) edited live
+through undoable commands (app.commands.SetFixture); a refused value shows the core's reason.
+Glue and unglue buttons sit here too (Ctrl+G, Ctrl+Shift+G)."""
+from __future__ import annotations
+
+from imgui_bundle import imgui
+
+import physics
+
+from ..commands import SetFixture
+from ..gluing import glue_selection, unglue_selection
+from .base import record
+from .style import DIM, ENTER
+
+
+def shape_text(shape) -> str:
+    """One line naming a shape and its size."""
+    if isinstance(shape, physics.Circle):
+        return f"circle r={shape.radius:.3g}"
+    if isinstance(shape, physics.Capsule):
+        return f"capsule r={shape.radius:.3g}, length {shape.length:.3g}"
+    if shape.kind in ("segment", "chain_segment"):
+        return shape.kind.replace("_", " ")
+    r = f", rounded r={shape.radius:.3g}" if shape.radius > 0 else ""
+    return f"polygon, {len(shape.vertices)} vertices{r}"
+
+
+def body_text(b) -> str:
+    fx = b.fixtures
+    return shape_text(fx[0].shape) if len(fx) == 1 else f"{len(fx)} fixtures"
+
+
+def set_fixture(app, body, index, field, value) -> bool:
+    ed = app.editor
+    try:
+        ed.execute(SetFixture(ed, body, index, field, value))
+        ed.edit_error = ""
+        return True
+    except ValueError as exc:
+        ed.edit_error = f"refused: {exc}"
+        ed.notify(f"fixture {index} {field} {ed.edit_error}", error=True)
+        return False
+
+
+def parse_bits(text: str):
+    """'0x3', '3' or '0b11' -> int; the text itself when it is not a number (the core refuses it
+    with its own reason)."""
+    try:
+        return int(text.strip(), 0)
+    except ValueError:
+        return text
+
+
+def draw_fixtures(section, b):
+    """The Fixtures list of body ``b`` and the glue/unglue buttons."""
+    app = section.app
+    fx = b.fixtures
+    sel_bodies = [s for s in app.editor.selection if isinstance(s, physics.Body) and s.alive]
+    if len(sel_bodies) > 1:
+        if imgui.button(f"Glue {len(sel_bodies)} bodies (Ctrl+G)"):
+            glue_selection(app.editor)
+        record(app, "inspector:glue")
+    if len(fx) > 1 and len(sel_bodies) == 1:
+        if imgui.button("Unglue (Ctrl+Shift+G)"):
+            unglue_selection(app.editor)
+        record(app, "inspector:unglue")
+    if not imgui.collapsing_header(f"Fixtures ({len(fx)})##fixtures"):
+        return
+    for i, f in enumerate(fx[:64]):            # a long chain: its first 64 segments
+        label = f"{i}: {shape_text(f.shape)}" + (f" '{f.name}'" if f.name else "")
+        if imgui.tree_node(f"{label}##fx{i}"):
+            fixture_fields(app, b, i, f)
+            imgui.tree_pop()
+        record(app, f"inspector:fixture:{i}")
+    if len(fx) > 64:
+        imgui.text_colored(DIM, f"... and {len(fx) - 64} more")
+
+
+def fixture_fields(app, b, i, f):
+    def num(label, field, value, step):
+        ch, v = imgui.input_float(f"{label}##fx{i}", value, step, 10 * step, "%.3f", ENTER)
+        record(app, f"inspector:fixture:{i}:{field}")
+        if ch:
+            set_fixture(app, b, i, field, v)
+    num("density", "density", f.density, 0.1)
+    num("restitution", "restitution", f.restitution, 0.05)
+    mu_s, mu_d = f.friction
+    ch, v = imgui.input_float2(f"friction s/d##fx{i}", [mu_s, mu_d], "%.3f", ENTER)
+    if ch:
+        set_fixture(app, b, i, "friction", tuple(v))
+    for field in ("category", "mask"):
+        ch, text = imgui.input_text(f"{field}##fx{i}", hex(getattr(f, field)), ENTER)
+        record(app, f"inspector:fixture:{i}:{field}")
+        if ch:
+            set_fixture(app, b, i, field, parse_bits(text))
+    ch, v = imgui.input_int(f"group##fx{i}", f.group, 1, 10, ENTER)
+    if ch:
+        set_fixture(app, b, i, "group", v)
+    ch, v = imgui.input_text(f"name##fx{i}", f.name or "", ENTER)
+    if ch:
+        set_fixture(app, b, i, "name", v or None)
