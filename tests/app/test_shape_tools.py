@@ -68,6 +68,8 @@ def test_polygon_tool_keeps_a_concave_L_that_rests_on_its_long_side(launch, tmp_
     # one body of convex pieces (not the hull): its mass is the L's area at density 1
     assert body["fixtures"] == ["polygon", "polygon"], body
     assert body["mass"] == pytest.approx(L_AREA, rel=0.03), "the hull's area would be 7.75"
+    app.key("Escape")                   # deselected: drawn in its own colour
+    app.settle()
     img = app.screenshot("l_drawn")
     # the notch (inside the hull, outside the L) is not filled; both legs are
     notch = to_screen(st, (0.5, 2.4))
@@ -118,7 +120,9 @@ def test_sketch_stroke_becomes_a_body_and_a_crossing_one_a_hint(launch, tmp_path
     assert len(body["fixtures"]) >= 2 and set(body["fixtures"]) == {"polygon"}, body
     area = abs(shoelace(world[:-1]))               # 13.5 m^2; RDP moves corners by < 3 px
     assert body["mass"] == pytest.approx(area, rel=0.05)
-    app.screenshot("sketch_body")
+    app.key("Escape")
+    app.settle()
+    assert body_pixels(app.screenshot("sketch_body")) > 5000    # 13.5 m^2 at 1600 px/m^2
     # a bow tie crosses itself: no body, a hint, and the sandbox keeps running
     bow = [(-2, 5), (2, 7), (2, 5), (-2, 7), (-2, 5)]
     stroke(app, [to_screen(st0, p) for p in bow])
@@ -146,6 +150,8 @@ def test_glue_two_boxes_fall_as_one_then_unglue_and_undo(launch, tmp_path):
     st = app.wait(lambda s: len(s["bodies"]) == 2, 10, "the glue")
     (glued,) = new_bodies(st, st0)
     assert glued["fixtures"] == ["polygon", "polygon"] and glued["mass"] == pytest.approx(2.0)
+    app.key("Escape")
+    app.settle()
     app.screenshot("glued")
     # run: one rigid body, so box a (0.5 m lower) lands first and the pair tips until b lands
     # too, as one: the two boxes keep their 3 m x 0.5 m offset in the body's frame
