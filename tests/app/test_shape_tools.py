@@ -19,8 +19,8 @@ W, H = 1280, 800
 ZOOM = 40.0
 
 
-def scene(path, bodies):
-    data = {"format": "stelkropp.scene", "version": 2, "name": "shapes",
+def scene(path, bodies, world=None):
+    data = {"format": "stelkropp.scene", "version": 2, "name": "shapes", "world": dict(world or {}),
             "camera": {"center": [0.0, 2.0], "zoom": ZOOM},
             "bodies": [{"name": "ground", "kind": "static", "shape": {"box": [24, 1]}, "position": [0, -0.5]},
                        *bodies]}
@@ -136,7 +136,9 @@ def test_sketch_stroke_becomes_a_body_and_a_crossing_one_a_hint(launch, tmp_path
 def test_glue_two_boxes_fall_as_one_then_unglue_and_undo(launch, tmp_path):
     boxes = [{"name": "a", "shape": {"box": [1, 1]}, "position": [-1.5, 3.0]},
              {"name": "b", "shape": {"box": [1, 1]}, "position": [1.5, 3.5], "friction": 0.3}]
-    app = launch(scene(tmp_path / "g.json", boxes), "--paused")
+    # sleeping off: a resting body that falls asleep is drawn dimmed, and the pixel checks below
+    # look for the awake colour
+    app = launch(scene(tmp_path / "g.json", boxes, {"sleeping": False}), "--paused")
     st0 = app.wait_ready(20)
     pick_tool(app, "select")
     app.click(*to_screen(st0, (-1.5, 3.0)))
