@@ -54,7 +54,10 @@ def _circle_poly_depth(c, r, P):
 
 def penetration(sim, include_static=True):
     """(max, mean over touching pairs) penetration depth of the current poses, measured by
-    exact geometry the same way for every engine (ideal: zero)."""
+    exact geometry the same way for every engine (ideal: zero).  NaN for a scene with bodies
+    of several or rounded shapes: this measure knows convex polygons and circles only."""
+    if any(r.get("parts") for r in sim.recs):
+        return float("nan"), float("nan")
     shapes = world_shapes(sim)
     n = len(shapes)
     ctr = np.empty((n, 2))
