@@ -17,7 +17,7 @@ class ToolsSection(Section):
 
     def draw(self):
         ed = self.app.editor
-        per_row = 5           # thirteen tools in three rows: the inspector below stays on screen
+        per_row = 5           # sixteen tools in four rows: the inspector below stays on screen
         gap = imgui.get_style().item_spacing.x
         width = (imgui.get_content_region_avail().x - (per_row - 1) * gap) / per_row
         for i, name in enumerate(ed.tool_names):
@@ -39,7 +39,8 @@ class ToolsSection(Section):
                     self.palette_drag = name
         imgui.push_text_wrap_pos(0)
         imgui.text_colored(DIM, ed.tool.help)
-        imgui.text_colored(DIM, "Drag box / n-gon / circle buttons into the scene to drop one.")
+        if ed.tool.droppable:  # only beside the tools it is about: the inspector below stays on screen
+            imgui.text_colored(DIM, "Drag box / n-gon / circle buttons into the scene to drop one.")
         imgui.pop_text_wrap_pos()
         self.options(ed.tool_options)
         self.joint_options(ed.tool_options, ed.tool.name)

@@ -45,7 +45,7 @@ def test_polygon_tool_says_why_at_the_pointer(launch, tmp_path):
     # a third point on the same line: no area, said so; the points are kept
     app.click(*map(int, to_screen(st0, (1.0, 4.0))))
     app.key("Return")
-    st = app.wait(lambda s: s["hint"] and "no area" in s["hint"], 10, "the no-area refusal")
+    st = app.wait(lambda s: s["hint"] and "zero area" in s["hint"], 10, "the no-area refusal")
     assert st["n_bodies"] == n0
     # a point off the line makes a triangle of the kept points (the middle one is dropped)
     app.click(*map(int, to_screen(st0, (-1.0, 6.0))))
@@ -53,7 +53,8 @@ def test_polygon_tool_says_why_at_the_pointer(launch, tmp_path):
     st = app.wait(lambda s: s["n_bodies"] == n0 + 1, 10, "the polygon")
     (poly,) = new_bodies(st, st0)
     assert poly["vertices"] == 3
-    assert "convex hull" in st["hint"] and "compound shapes" in st["hint"], st["hint"]
+    # the outline is kept as drawn (issue 13: no silent convex hull); a convex one needs no word
+    assert not st["hint"] or "convex hull" not in st["hint"], st["hint"]
     assert not st["gl_errors"]
 
 

@@ -92,7 +92,8 @@ def test_polygon_ngon_circle_tools_and_undo(launch, tmp_path):
     app = launch(tools_scene(tmp_path / "tools.json"), "--paused")
     st0 = app.wait_ready(20)
     n0 = st0["n_bodies"]
-    # polygon: click five points (one inside the others' hull), Enter makes their convex hull
+    # polygon: click five points (the last one notches the outline), Enter keeps the concave
+    # outline as drawn (issue 13: no silent convex hull), the body placed at its area centroid
     app.key("3")
     app.frames(2)
     corners = [(-3.0, 4.0), (-1.0, 4.2), (-0.8, 5.8), (-2.8, 6.0), (-2.0, 5.0)]   # the last is interior
@@ -102,8 +103,13 @@ def test_polygon_ngon_circle_tools_and_undo(launch, tmp_path):
     app.key("Return")
     st = app.wait(lambda s: s["n_bodies"] == n0 + 1, 10, "the polygon")
     (poly,) = new_bodies(st, st0)
-    assert poly["shape"] == "polygon" and poly["vertices"] == 4, poly
-    assert np.allclose(poly["position"], np.mean(corners[:4], axis=0), atol=0.15)
+    assert poly["shape"] == "polygon", poly
+    P = np.array(corners)
+    Q = np.roll(P, -1, axis=0)
+    cross = P[:, 0] * Q[:, 1] - Q[:, 0] * P[:, 1]          # shoelace: centroid of the outline's area
+    centroid = ((P + Q) * cross[:, None]).sum(axis=0) / (3.0 * cross.sum())
+    assert np.allclose(poly["position"], centroid, atol=0.05)
+    assert not np.allclose(centroid, np.mean(corners[:4], axis=0), atol=0.05)  # the hull's would differ
     img = app.screenshot("polygon")
     sx, sy = map(int, poly["screen"])
     assert orange_pixels(img, sx - 25, sy - 25, sx + 25, sy + 25) > 1200, "the polygon is not drawn"
