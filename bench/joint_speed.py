@@ -48,36 +48,43 @@ def measure(names, steps=None, prefix="joints") -> list[dict]:
     return out
 
 
-def table_md(rows) -> list[str]:
-    """The markdown table of ``measure``'s rows."""
-    hdr = ["scene", "bodies", "joints", "steps", "soft_step ms", "pymunk ms", "x pymunk", "first step s", "status"]
+def table_md(rows, count="joints") -> list[str]:
+    """The markdown table of ``measure``'s rows; ``count`` names the column of what each scene
+    is made of (``joints``, or ``fixtures`` for bench.shape_speed)."""
+    hdr = ["scene", "bodies", count, "steps", "soft_step ms", "pymunk ms", "x pymunk", "first step s", "status"]
     L = ["| " + " | ".join(hdr) + " |", "|" + "---|" * len(hdr)]
     for r in rows:
         L.append("| " + " | ".join(str(x) for x in [
-            f"`{r['scene']}`", r["bodies"], r["joints"], r["steps"], fmt(r["ms_ours"]), fmt(r["ms_pymunk"]),
+            f"`{r['scene']}`", r["bodies"], r[count], r["steps"], fmt(r["ms_ours"]), fmt(r["ms_pymunk"]),
             fmt(r["ratio"], 2), fmt(r["first_step_s"], 2), r["status"]]) + " |")
     return L
 
 
-def main(argv=None) -> int:
-    """``python -m bench.joint_speed``: measure, write the JSON and the table, print it."""
-    ap = argparse.ArgumentParser(prog="python -m bench.joint_speed", description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--scenes", default=",".join(JOINT_BENCH), help="comma-separated joint scenes")
+def cli(argv, prog, doc, known, prefix, count) -> int:
+    """The command line both scene families share: measure ``--scenes`` (of ``known``), write
+    ``<prefix-stem>_speed.json`` and ``.md`` into ``--out``, print the table."""
+    ap = argparse.ArgumentParser(prog=prog, description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--scenes", default=",".join(known), help="comma-separated scenes")
     ap.add_argument("--steps", type=int, default=None, help="steps per scene (default: the scene's plan, 300)")
     ap.add_argument("--out", type=Path, default=RESULTS)
     a = ap.parse_args(argv)
     names = a.scenes.split(",")
-    bad = [n for n in names if n not in JOINT_BENCH]
+    bad = [n for n in names if n not in known]
     if bad:
-        ap.error(f"unknown joint scene: {', '.join(bad)} (known: {', '.join(JOINT_BENCH)})")
-    rows = measure(names, a.steps)
+        ap.error(f"unknown scene: {', '.join(bad)} (known: {', '.join(known)})")
+    rows = measure(names, a.steps, prefix=prefix)
+    stem = {"joints": "joint", "shapes": "shape"}[prefix]
     a.out.mkdir(parents=True, exist_ok=True)
-    (a.out / "joint_speed.json").write_text(json.dumps(rows, indent=1) + "\n")
-    md = "\n".join(table_md(rows)) + "\n"
-    (a.out / "joint_speed.md").write_text(md)
+    (a.out / f"{stem}_speed.json").write_text(json.dumps(rows, indent=1) + "\n")
+    md = "\n".join(table_md(rows, count)) + "\n"
+    (a.out / f"{stem}_speed.md").write_text(md)
     print(md)
     return 0
+
+
+def main(argv=None) -> int:
+    """``python -m bench.joint_speed``: measure, write the JSON and the table, print it."""
+    return cli(argv, "python -m bench.joint_speed", __doc__, JOINT_BENCH, "joints", "joints")
 
 
 if __name__ == "__main__":

@@ -12,46 +12,13 @@ bench/results/).
 """
 from __future__ import annotations
 
-import argparse
-import json
-from pathlib import Path
-
-from .joint_speed import measure
-from .paths import RESULTS
-from .report.tables import fmt
+from .joint_speed import cli
 from .scenes import SHAPE_BENCH
-
-
-def table_md(rows) -> list[str]:
-    """The markdown table of ``measure``'s rows (fixtures instead of joints)."""
-    hdr = ["scene", "bodies", "fixtures", "steps", "soft_step ms", "pymunk ms", "x pymunk", "first step s", "status"]
-    L = ["| " + " | ".join(hdr) + " |", "|" + "---|" * len(hdr)]
-    for r in rows:
-        L.append("| " + " | ".join(str(x) for x in [
-            f"`{r['scene']}`", r["bodies"], r["fixtures"], r["steps"], fmt(r["ms_ours"]), fmt(r["ms_pymunk"]),
-            fmt(r["ratio"], 2), fmt(r["first_step_s"], 2), r["status"]]) + " |")
-    return L
 
 
 def main(argv=None) -> int:
     """``python -m bench.shape_speed``: measure, write the JSON and the table, print it."""
-    ap = argparse.ArgumentParser(prog="python -m bench.shape_speed", description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--scenes", default=",".join(SHAPE_BENCH), help="comma-separated many-shape scenes")
-    ap.add_argument("--steps", type=int, default=None, help="steps per scene (default: the scene's plan, 300)")
-    ap.add_argument("--out", type=Path, default=RESULTS)
-    a = ap.parse_args(argv)
-    names = a.scenes.split(",")
-    bad = [n for n in names if n not in SHAPE_BENCH]
-    if bad:
-        ap.error(f"unknown many-shape scene: {', '.join(bad)} (known: {', '.join(SHAPE_BENCH)})")
-    rows = measure(names, a.steps, prefix="shapes")
-    a.out.mkdir(parents=True, exist_ok=True)
-    (a.out / "shape_speed.json").write_text(json.dumps(rows, indent=1) + "\n")
-    md = "\n".join(table_md(rows)) + "\n"
-    (a.out / "shape_speed.md").write_text(md)
-    print(md)
-    return 0
+    return cli(argv, "python -m bench.shape_speed", __doc__, SHAPE_BENCH, "shapes", "fixtures")
 
 
 if __name__ == "__main__":
