@@ -10,7 +10,7 @@ import time
 
 import physics
 
-from .fixture_specs import BODY_FIELDS, body_spec, glued_spec, make_body, unglued_specs
+from .fixture_specs import BODY_FIELDS, body_spec, make_body
 from .joint_specs import joint_fields, make_joint, param_value
 
 
@@ -261,51 +261,6 @@ class SetWorld(Command):
             self.t = other.t
             return True
         return False
-
-
-class Glue(Command):
-    """Bodies -> one body holding all their fixtures where they are (app.fixture_specs.glued_spec);
-    the springs and joints on them go with the old bodies (undo brings everything back)."""
-
-    def __init__(self, app, bodies):
-        self.remove = RemoveBodies(app, bodies)
-        self.add = AddBody(glued_spec(bodies), "glue")
-        self.label = f"glue {len(bodies)} bodies"
-
-    def do(self, app):
-        self.remove.do(app)
-        try:
-            self.add.do(app)
-        except ValueError:
-            self.remove.undo(app)
-            raise
-
-    def undo(self, app):
-        self.add.undo(app)
-        self.remove.undo(app)
-
-
-class Unglue(Command):
-    """A body -> one body per fixture (a chain stays whole), each moving as its part did."""
-
-    def __init__(self, app, body):
-        self.remove = RemoveBodies(app, [body])
-        self.adds = [AddBody(spec, "unglue") for spec in unglued_specs(body)]
-        self.label = "unglue body"
-
-    def do(self, app):
-        self.remove.do(app)
-        for a in self.adds:
-            a.do(app)
-
-    def undo(self, app):
-        for a in reversed(self.adds):
-            a.undo(app)
-        self.remove.undo(app)
-
-    @property
-    def bodies(self):
-        return [a.ref.obj for a in self.adds]
 
 
 class SetFixture(Command):

@@ -169,3 +169,124 @@ def test_parts_draw_each_fixture(editor):
     assert sorted(p.vcount.tolist()) == [4, 4, 4, 4, 2 * ARC, 4 * ARC]
     assert len(p.circle_body) == 1 and len(p.line_body) == 2
     np.testing.assert_allclose(p.circle_centre[0], (1.0, 6.0), atol=1e-12)   # origin (0, 6) + its offset
+
+
+def world_ends(w):
+    """Every spring's and joint's bodies (by name) and world anchors, in creation order."""
+    def nm(b):
+        return None if b is None else b.name
+    springs = [(nm(s.body_a), nm(s.body_b), s.body_a.local_to_world(s.anchor_a),
+                s.anchor_b if s.body_b is None else s.body_b.local_to_world(s.anchor_b), s.rest_length)
+               for s in w.springs]
+    joints = [(j.kind, nm(j.body_a), nm(j.body_b), j.anchor_a, j.anchor_b) for j in w.joints]
+    return springs, joints
+
+
+def exact_state(w):
+    """What undo must bring back exactly: bodies, springs and joints as their specs' numbers."""
+    from app.joint_specs import joint_fields
+    bodies = sorted((b.name or "", tuple(b.position), b.angle, len(b.fixtures)) for b in w.bodies)
+    springs = [(s.body_a.name, None if s.body_b is None else s.body_b.name, s.anchor_a, s.anchor_b, s.stiffness,
+                s.rest_length) for s in w.springs]
+    joints = [(j.kind, j.body_a.name, None if j.body_b is None else j.body_b.name, joint_fields(j)) for j in w.joints]
+    return bodies, springs, joints
+
+
+def jointed(editor):
+    """a, b (turned 0.4) and the ground held by a spring and a joint of every kind that has geometry."""
+    w = editor.world
+    g, a, b = named(editor, "ground"), named(editor, "a"), named(editor, "b")
+    w.add_spring(a, g, anchor_a=(0.3, 0.4), anchor_b=(-3, 0.5), stiffness=50.0, name="s_ag")
+    w.add_spring(a, b, anchor_a=(-0.2, 0.1), anchor_b=(0.1, 0.2), name="s_ab")          # a-b: dropped by glue
+    hinge = w.add_joint("revolute", a, g, anchor=a.local_to_world((0.4, -0.2)), name="hinge")
+    hinge.reference_angle = 0.1                                   # the angle reads 0.3, not 0
+    w.add_joint("prismatic", b, None, anchor=b.local_to_world((0.2, 0.3)), axis=(1.0, 0.0), lower=-1.0, upper=1.0,
+                name="slider")
+    w.add_joint("wheel", a, g, anchor=a.local_to_world((0.1, -0.4)), axis=(0.0, 1.0), name="wheel")
+    w.add_joint("distance", a, None, anchor_a=a.local_to_world((0.5, 0.5)), anchor_b=(-3, 6), name="rope")
+    w.add_joint("motor", a, g, linear_offset=(-2.7, 2.6), angular_offset=0.25, name="motor")
+    w.add_joint("weld", a, b, anchor=(0, 2), name="weld")         # a-b: dropped by glue
+    return a, b, g
+
+
+def test_glue_keeps_springs_and_joints_at_their_world_points(editor):
+    w = editor.world
+    a, b, g = jointed(editor)
+    before_exact = exact_state(w)
+    springs0, joints0 = world_ends(w)
+    readouts0 = {j.name: (j.angle if j.kind in ("revolute", "motor") else j.translation if j.kind == "prismatic"
+                          else j.rest_length if j.kind == "distance" else None) for j in w.joints}
+    hinge_ref = editor.refs.of(w.joints[0])
+    a_pos, a_angle = np.array(a.position), a.angle
+    editor.selection = [b, a]                      # b first: the compound takes b's frame, so a's parts move frame
+    glue_selection(editor)
+    c = editor.world.bodies[-1]
+    assert c.name == "b" and len(w.springs) == 1 and len(w.joints) == 5
+    label = editor.doc.history.done[-1].label
+    assert label == "glue 2 bodies; kept 1 spring and 5 joints; dropped 1 spring and 1 joint between glued bodies"
+    assert "dropped" in editor.notices.items[-1][0]
+    springs1, joints1 = world_ends(w)
+    # the same ends, with every glued body now the compound "b", at the same world points
+    rename = {"a": "b"}
+    expect_s = [(rename.get(x, x), rename.get(y, y), pa, pb, r) for x, y, pa, pb, r in springs0 if {x, y} != {"a", "b"}]
+    expect_j = [(k, rename.get(x, x), rename.get(y, y), pa, pb) for k, x, y, pa, pb in joints0 if k != "weld"]
+    assert len(springs1 + joints1) == len(expect_s + expect_j)
+    for got, want in zip(springs1 + joints1, expect_s + expect_j):
+        assert [v for v in got if isinstance(v, (str, type(None)))] == [v for v in want if isinstance(v, (str, type(None)))]
+        for gv, wv in zip(got, want):
+            if isinstance(wv, tuple) and got[0] != "motor":      # a motor's "anchor" is its body's origin
+                np.testing.assert_allclose(gv, wv, atol=1e-12)
+    # what the joints measure between their bodies reads as before (reference angle, axis, length corrected)
+    for j in w.joints:
+        if readouts0[j.name] is not None:
+            now = j.angle if j.kind in ("revolute", "motor") else j.translation if j.kind == "prismatic" else j.rest_length
+            assert now == pytest.approx(readouts0[j.name], abs=1e-12), j.name
+    slider = next(j for j in w.joints if j.kind == "prismatic")
+    np.testing.assert_allclose(slider.axis, (1.0, 0.0), atol=1e-12)
+    wheel = next(j for j in w.joints if j.kind == "wheel")                   # on a: its axis turned into b's frame
+    np.testing.assert_allclose(wheel.axis, (0.0, 1.0), atol=1e-12)
+    # the motor's target: with the compound there, a's old origin and angle sit at a's old target
+    m = next(j for j in w.joints if j.kind == "motor")
+    target_angle = g.angle + m.angular_offset
+    target_x = np.array(g.local_to_world(m.linear_offset))
+    off_a = np.array(c.world_to_local(a_pos))
+    rc = np.array([[np.cos(target_angle), -np.sin(target_angle)], [np.sin(target_angle), np.cos(target_angle)]])
+    np.testing.assert_allclose(rc @ off_a + target_x, g.local_to_world((-2.7, 2.6)), atol=1e-12)
+    assert target_angle + (a_angle - c.angle) == pytest.approx(g.angle + 0.25, abs=1e-12)
+    assert hinge_ref.obj.alive and hinge_ref.obj.body_a is c       # the history's Ref follows the joint
+    editor.undo()
+    assert "dropped" in editor.notices.items[-1][0]
+    assert exact_state(w) == before_exact
+    assert hinge_ref.obj.alive and hinge_ref.obj.body_a.name == "a" and hinge_ref.obj.reference_angle == 0.1
+    editor.redo()
+    assert world_ends(w)[1][0][1] == "b" and len(w.joints) == 5 and hinge_ref.obj.body_a is w.bodies[-1]
+    editor.undo()
+    assert exact_state(w) == before_exact
+
+
+def test_unglue_keeps_springs_and_joints_on_the_part_they_hold(editor):
+    w = editor.world
+    g = named(editor, "ground")
+    c = w.add_body([physics.Polygon.box(1, 1), physics.Circle(0.5, offset=(2, 0))], position=(0, 4), angle=0.3,
+                   name="c")
+    w.add_spring(c, None, anchor_a=(2.2, 0.1), anchor_b=(2, 8), name="s")          # in the circle
+    w.add_joint("revolute", c, g, anchor=c.local_to_world((-0.3, 0.3)), name="pin")  # in the box
+    # outside both parts, nearer the circle (0.4 m) than the box (1.55 m)
+    w.add_joint("distance", g, c, anchor_a=(0, 0), anchor_b=c.local_to_world((2.0, 0.9)), name="rope")
+    before_exact = exact_state(w)
+    springs0, joints0 = world_ends(w)
+    editor.selection = [c]
+    unglue_selection(editor)
+    box, disc = (next(b for b in w.bodies if b.alive and b.fixtures[0].shape.kind == k and b.name != "ground"
+                      and b.position == pytest.approx((0, 4))) for k in ("polygon", "circle"))
+    s, = w.springs
+    pin, rope = w.joints
+    assert s.body_a is disc and pin.body_a is box and rope.body_b is disc
+    springs1, joints1 = world_ends(w)
+    for got, want in zip(springs1 + joints1, springs0 + joints0):
+        for gv, wv in zip(got, want):
+            if isinstance(wv, tuple):
+                np.testing.assert_allclose(gv, wv, atol=1e-12)
+    assert "kept 1 spring and 2 joints" in editor.notices.items[-1][0]
+    editor.undo()
+    assert exact_state(w) == before_exact
