@@ -1,6 +1,7 @@
-"""The inspector's fixture part (issue 13): a body's fixtures listed, each one's material
-(density, restitution, friction) and filter (category and mask bits, group, name) edited live
-through undoable commands (app.commands.SetFixture); a refused value shows the core's reason.
+"""The inspector's fixture part (issue 13): every fixture of a body listed in a scrolling list;
+the picked one's material (density, restitution, friction) and filter (category and mask bits,
+group, name) edited live through undoable commands (app.commands.SetFixture); a refused value
+shows the core's reason.
 Glue and unglue buttons sit here too (Ctrl+G, Ctrl+Shift+G)."""
 from __future__ import annotations
 
@@ -10,8 +11,10 @@ import physics
 
 from ..commands import SetFixture
 from ..gluing import glue_selection, unglue_selection
-from .base import record
-from .style import DIM, ENTER
+from .base import record, record_window
+from .style import ENTER
+
+LIST_ROWS = 8         # rows of the fixture list in view; more scroll
 
 
 def shape_text(shape) -> str:
@@ -65,16 +68,43 @@ def draw_fixtures(section, b):
         if imgui.button("Unglue (Ctrl+Shift+G)"):
             unglue_selection(app.editor)
         record(app, "inspector:unglue")
-    if not imgui.collapsing_header(f"Fixtures ({len(fx)})##fixtures"):
+    opened = imgui.collapsing_header(f"Fixtures ({len(fx)})##fixtures")
+    record(app, "inspector:fixtures")
+    if not opened:
         return
-    for i, f in enumerate(fx[:64]):            # a long chain: its first 64 segments
-        label = f"{i}: {shape_text(f.shape)}" + (f" '{f.name}'" if f.name else "")
-        if imgui.tree_node(f"{label}##fx{i}"):
-            fixture_fields(app, b, i, f)
-            imgui.tree_pop()
-        record(app, f"inspector:fixture:{i}")
-    if len(fx) > 64:
-        imgui.text_colored(DIM, f"... and {len(fx) - 64} more")
+    i = fixture_list(section, b)
+    f = fx[i]
+    imgui.text(f"fixture {i}: {shape_text(f.shape)}")
+    fixture_fields(app, b, i, f)
+
+
+def fixture_list(section, b) -> int:
+    """Every fixture of ``b`` as a row of a scrolling list (a clipper submits only the rows in
+    view: a long chain has thousands of segments); a click picks the one edited below.  Returns
+    the picked index (the first fixture until one is clicked, or when the body changed)."""
+    app = section.app
+    fx = b.fixtures
+    body_id, pick = getattr(section, "fixture_pick", (None, 0))
+    if body_id != b.id or pick >= len(fx):
+        pick = 0
+    row_h = imgui.get_text_line_height_with_spacing()
+    shown = min(len(fx), LIST_ROWS)
+    imgui.begin_child("##fixture_list", imgui.ImVec2(0, shown * row_h + 2 * imgui.get_style().window_padding.y),
+                      imgui.ChildFlags_.borders.value)
+    record_window(app, "inspector:fixture_list")
+    clipper = imgui.ListClipper()
+    clipper.begin(len(fx), row_h)
+    while clipper.step():
+        for i in range(clipper.display_start, clipper.display_end):
+            f = fx[i]
+            label = f"{i}: {shape_text(f.shape)}" + (f" '{f.name}'" if f.name else "")
+            if imgui.selectable(f"{label}##fx{i}", i == pick)[0]:
+                pick = i
+            record(app, f"inspector:fixture:{i}")
+    clipper.end()
+    imgui.end_child()
+    section.fixture_pick = (b.id, pick)
+    return pick
 
 
 def fixture_fields(app, b, i, f):

@@ -290,3 +290,67 @@ def test_unglue_keeps_springs_and_joints_on_the_part_they_hold(editor):
     assert "kept 1 spring and 2 joints" in editor.notices.items[-1][0]
     editor.undo()
     assert exact_state(w) == before_exact
+
+
+class _Section:
+    def __init__(self, app):
+        self.app = app
+
+
+def test_inspector_lists_every_fixture(editor):
+    """A body of 100 fixtures: all 100 rows reachable by scrolling the list with the mouse wheel
+    (it used to stop at 64), on an imgui context with no window; a click picks the one edited."""
+    from imgui_bundle import imgui
+    from app.panels.fixture_inspector import draw_fixtures
+    squares = [physics.Polygon([(x, 0), (x + 0.5, 0), (x + 0.5, 0.5), (x, 0.5)]) for x in range(100)]
+    b = editor.world.add_body(squares, position=(0, 8))
+    editor.selection = [b]
+    app = FakeApp(editor)
+    app.ui_rects = {}
+    section = _Section(app)
+    ctx = imgui.create_context()
+    try:
+        io = imgui.get_io()
+        io.set_ini_filename(None)                     # no imgui.ini left in the working directory
+        io.display_size = imgui.ImVec2(400, 800)
+        io.backend_flags |= imgui.BackendFlags_.renderer_has_textures.value   # fonts without a GL texture
+        seen = set()
+
+        def frame(mouse=None, down=None, wheel=0.0):
+            if mouse is not None:
+                io.add_mouse_pos_event(*mouse)
+            if down is not None:
+                io.add_mouse_button_event(0, down)
+            if wheel:
+                io.add_mouse_wheel_event(0.0, wheel)
+            io.delta_time = 1 / 60
+            imgui.new_frame()
+            imgui.set_next_window_pos(imgui.ImVec2(0, 0))
+            imgui.set_next_window_size(imgui.ImVec2(400, 800))
+            imgui.begin("inspector")
+            draw_fixtures(section, b)
+            imgui.end()
+            imgui.render()
+            seen.update(int(k.split(":")[2]) for k in app.ui_rects if k.count(":") == 2 and k[-1].isdigit()
+                        and k.startswith("inspector:fixture:"))
+
+        def click(key):
+            x0, y0, x1, y1 = app.ui_rects[key]
+            for down in (True, False):
+                frame(mouse=((x0 + x1) / 2, (y0 + y1) / 2), down=down)
+            frame()
+
+        frame()
+        click("inspector:fixtures")                    # open the Fixtures header
+        assert "inspector:fixture_list" in app.ui_rects and len(seen) < 100   # a clipped list, not all at once
+        x0, y0, x1, y1 = app.ui_rects["inspector:fixture_list"]
+        for _ in range(200):
+            if 99 in seen:
+                break
+            frame(mouse=((x0 + x1) / 2, (y0 + y1) / 2), wheel=-1.0)
+        assert seen == set(range(100))
+        click("inspector:fixture:99")
+        assert section.fixture_pick == (b.id, 99)
+        assert "inspector:fixture:99:density" in app.ui_rects
+    finally:
+        imgui.destroy_context(ctx)
