@@ -50,7 +50,7 @@ class CompareView:
         split = self.split()
         for k, layer in enumerate(self.layers):
             if k < len(lanes) and (not split or k == 0):
-                layer.build(lanes[k].world.render_data(), lanes[k].color, solid=split)
+                layer.build(lanes[k].world.render_data(), lanes[k].color, solid=split, scale=self.app.camera.scale)
             else:
                 layer.clear()
 

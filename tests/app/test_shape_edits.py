@@ -354,3 +354,23 @@ def test_inspector_lists_every_fixture(editor):
         assert "inspector:fixture:99:density" in app.ui_rects
     finally:
         imgui.destroy_context(ctx)
+
+
+def test_compare_ghost_draws_each_fixture(editor):
+    """A comparison lane's ghost (app.render.ghost) draws a compound body's every fixture as the
+    scene does, not one shape per body: the box, the offset circle at its own centre, the
+    capsule's rounded outline and a segment's line; the static ground left out in ghost view."""
+    from app.render.ghost import lane_arrays
+    w = editor.world
+    w.add_body([physics.Polygon.box(1, 1), physics.Circle(0.3, offset=(1, 0)), physics.Capsule((0, 1), (1, 1), 0.2),
+                physics.Segment((-1, 0), (-1, 1))], position=(0, 6))
+    polys, discs_, lines = lane_arrays(render_data(w), (1.0, 0.5, 0.0, 1.0), scale=40.0)
+    visible = polys[:, 10] > 0                     # line alpha: the static ground's is 0 in ghost view
+    # a fan is 3 vertices per edge: boxes a, b and the compound's box (4 edges each), its capsule (2 x ARC)
+    assert visible.sum() == 3 * (3 * 4 + 2 * ARC)
+    # one disc (a 6-vertex quad) of radius 0.3 about the circle fixture's centre (1, 6), not the body's (0, 6)
+    assert discs_.shape == (6, 14) and np.all(discs_[:, 4] == np.float32(0.3))
+    np.testing.assert_allclose(discs_[:, 0:2].mean(axis=0), (1.0, 6.0), atol=1e-6)
+    # the segment: one line quad (6 vertices) around x = -1 in the lane colour
+    assert lines.shape == (6, 7) and np.all(lines[:, 3:7] == np.float32([1.0, 0.5, 0.0, 1.0]))
+    np.testing.assert_allclose(lines[:, 0].mean(), -1.0, atol=1e-6)
