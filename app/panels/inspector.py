@@ -22,6 +22,7 @@ def wrap_degrees(deg: float) -> float:
 
 class InspectorSection(Section):
     title = "Inspector"
+    fixture_pick = (None, 0)     # (body id, fixture index) picked in the Fixtures list (fixture_inspector)
 
     def draw(self):
         app, ed = self.app, self.app.editor
