@@ -24,6 +24,7 @@ from .world_joints import JointsMixin
 from .world_queries import QueriesMixin
 from .world_batch import BatchMixin
 from .world_springs import SpringsMixin
+from .world_snapshot import SnapshotMixin
 
 __all__ = ["World", "Contact", "RenderData", "STATE_DTYPE", "DT_MIN"]
 
@@ -44,7 +45,7 @@ def _tolerance(field: str, doc: str = ""):
     return property(get, put, doc=doc)
 
 
-class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, SpringsMixin):
+class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, SpringsMixin, SnapshotMixin):
     """A 2D rigid-body world.
 
     ``World(gravity=(0, -9.81), dt=1/60, solver="soft_step")``; add bodies with
