@@ -11,7 +11,18 @@ from .store.joints import BROKEN
 STATE_DTYPE = np.dtype([("id", np.int64), ("position", np.float64, (2,)), ("angle", np.float64),
                         ("velocity", np.float64, (2,)), ("angular_velocity", np.float64), ("awake", np.bool_)])
 
-Contact = namedtuple("Contact", "body_a body_b points normal depth fixture_a fixture_b", defaults=(None, None))
+Contact = namedtuple("Contact", "body_a body_b points normal depth fixture_a fixture_b normal_impulses tangent_impulses",
+                     defaults=(None, None, None, None))
+Contact.__doc__ = """A touching contact of the last step (``world.contacts()``).
+
+``points`` are the kept manifold points (world, m), ``normal`` the unit normal from body_a to
+body_b, ``depth`` the deepest penetration (m).  ``normal_impulses`` and ``tangent_impulses``
+are, per kept point, the impulse (N s) the contact applied to body_b over the last step (body_a
+gets the opposite), along ``normal`` and along the tangent (-n_y, n_x).  What they are per
+solver mode (docs/solver-modes.md): ``sequential_impulse`` and ``impulse`` / ``hybrid`` their
+accumulated impulses of the step; ``soft_step`` the last sub-step's accumulated impulse times
+the sub-steps (the step's impulse under a steady load); ``penalty`` (and hybrid's penalty
+points) the force times the sub-step length, summed over the sub-steps."""
 RenderData = namedtuple(
     "RenderData",
     "vertices vstart vcount kind awake shape radius center angle com ids aabb "
@@ -50,9 +61,20 @@ def state(world) -> np.ndarray:
     return out
 
 
+def impulse_scale(world) -> float:
+    """Factor from the contact table's impulses to impulses over the last step: the step length
+    over the span the last solve recorded (soft_step: one sub-step), 1 for modes that record none
+    (their impulses are the step's already)."""
+    c = world._store.contacts
+    if c.span_step != world.steps or c.span <= 0.0:
+        return 1.0
+    return float(world._pipeline.ctx.get("dt")) / c.span
+
+
 def contacts(world) -> list:
     """Touching contacts of the last step (normal from body_a to body_b, depth > -slop)."""
     c = world._store.contacts
+    scale = impulse_scale(world)
     out = []
     ids = world._store.bodies.view.id
     fixtures = world._fixture_handles
@@ -66,7 +88,9 @@ def contacts(world) -> list:
                            [tuple(map(float, c.cur.point[k, p])) for p in keep],
                            tuple(map(float, c.cur.normal[k])),
                            max(float(c.cur.depth[k, p]) for p in keep),
-                           fixtures.get(key >> 32), fixtures.get(key & 0xFFFFFFFF)))
+                           fixtures.get(key >> 32), fixtures.get(key & 0xFFFFFFFF),
+                           tuple(float(c.cur.jn[k, p]) * scale for p in keep),
+                           tuple(float(c.cur.jt[k, p]) * scale for p in keep)))
     return out
 
 

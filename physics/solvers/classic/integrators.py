@@ -152,6 +152,11 @@ def advance(c, p, B, S, C, P, R, J, JW, JS):
     method = c.integrator
     pen = p.pen
     h = c.dt / substeps
+    if pen[0] > 0.0:
+        # penalty points report F h summed over this step's sub-steps (update_stick); impulse
+        # points are zeroed again when the impulses start (impulses.activate_impulses)
+        C.jn[: c.nc] = 0.0
+        C.jt[: c.nc] = 0.0
     for _ in range(substeps):
         if method == 0:
             euler(c, p, B, S, C, P, R, h)

@@ -120,7 +120,8 @@ def penalty_forces(B, C, nc, P, X, Q, V, W, X0, Q0, F, T, pen):
 @kernel
 def update_stick(B, C, nc, P, R, h, pen):
     """After a sub-step: stretch the stick springs by v_t h, slip where they exceed mu F_n;
-    remember the fastest approach (as the most negative normal speed)."""
+    remember the fastest approach (as the most negative normal speed); add F h to the points'
+    ``jn``/``jt`` (zeroed at the step's start by ``advance``)."""
     for k in range(nc):
         for p in range(C.count[k]):
             if P.role[k, p] != PENALTY:
@@ -130,10 +131,15 @@ def update_stick(B, C, nc, P, R, h, pen):
             dvx, dvy = rel_vel(B.v, B.w, C.a[k], C.b[k], rax, ray, rbx, rby)
             vn = dvx * C.normal[k, 0] + dvy * C.normal[k, 1]
             C.approach[k, p] = min(C.approach[k, p], min(0.0, vn))
+            # the contact's impulse of the step (views.contacts): F h at the end of each sub-step
+            # (the force the next sub-step starts from), summed; the solve never reads it back
+            lim = friction_cap(C, k, vt, fn, pen[3])
+            C.jn[k, p] += fn * h
+            C.jt[k, p] += min(lim, max(-lim, ft)) * h
             if d <= 0.0:
                 C.stick[k, p] = 0.0
                 continue
             s = C.stick[k, p] + h * vt
             kt = P.mass_t[k, p] * pen[1] * pen[1]
-            smax = friction_cap(C, k, vt, fn, pen[3]) / kt if kt > 0.0 else 0.0
+            smax = lim / kt if kt > 0.0 else 0.0
             C.stick[k, p] = min(smax, max(-smax, s))
