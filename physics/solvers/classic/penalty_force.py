@@ -131,11 +131,11 @@ def update_stick(B, C, nc, P, R, h, pen):
             dvx, dvy = rel_vel(B.v, B.w, C.a[k], C.b[k], rax, ray, rbx, rby)
             vn = dvx * C.normal[k, 0] + dvy * C.normal[k, 1]
             C.approach[k, p] = min(C.approach[k, p], min(0.0, vn))
-            # the contact's impulse of the step (views.contacts): F h at the end of each sub-step
-            # (the force the next sub-step starts from), summed; the solve never reads it back
+            # the contact's impulse of the step (views.contacts): F h summed over the sub-steps, F
+            # the force the next sub-step starts from (symplectic Euler applies exactly that one);
+            # the solve never reads it back
             lim = friction_cap(C, k, vt, fn, pen[3])
             C.jn[k, p] += fn * h
-            C.jt[k, p] += min(lim, max(-lim, ft)) * h
             if d <= 0.0:
                 C.stick[k, p] = 0.0
                 continue
@@ -143,3 +143,5 @@ def update_stick(B, C, nc, P, R, h, pen):
             kt = P.mass_t[k, p] * pen[1] * pen[1]
             smax = lim / kt if kt > 0.0 else 0.0
             C.stick[k, p] = min(smax, max(-smax, s))
+            ft = -P.mass_t[k, p] * pen[1] * (pen[1] * C.stick[k, p] + 2.0 * vt)  # with the new stretch
+            C.jt[k, p] += min(lim, max(-lim, ft)) * h
