@@ -23,8 +23,9 @@ from ..base import SolverMode
 from .contact_geometry import classic_points
 from ..joint_settings import joint_position_setting, joint_solver_setting
 from .integrators import LIMITS, allocate_work, substeps_for
+from .penalty_load import stable_load
 
-NO_PENALTY = np.zeros(5)
+NO_PENALTY = np.zeros(6)
 PROJECTIONS = ("none", "linear", "nonlinear")  # the projection setting's choices, by code
 
 
@@ -89,9 +90,9 @@ class SeedMode(SolverMode):
     uses_integrator = True
     # sub-steps of the force integration, the impact / restitution speed threshold, the
     # position share of the impulses (impulses.position_share), the projection (code in
-    # PROJECTIONS) and the penalty parameters [on, omega, zeta, stick_speed, push_out_speed]
+    # PROJECTIONS) and the penalty parameters [on, omega, zeta, stick_speed, push_out_speed, load limit]
     derived = (("substeps", np.int64), ("thr", np.float64), ("share", np.float64), ("proj", np.int64),
-               ("pen", np.float64, (5,)))
+               ("pen", np.float64, (6,)))
 
     def __init__(self):
         self.R = allocate_work(64)
@@ -155,9 +156,13 @@ class SeedMode(SolverMode):
         return out + [f"integrate:{integrator}"]
 
 
-def penalty_params(values: dict) -> np.ndarray:
-    return np.array([1.0, 2.0 * math.pi * values["contact_hertz"], values["damping_ratio"],
-                     values["stick_speed"], values["push_out_speed"]])
+def penalty_params(values: dict, dt: float = 0.0, substeps: int = 1) -> np.ndarray:
+    """[on, omega, zeta, stick_speed, push_out_speed, load limit] of the penalty contacts; the
+    load limit (penalty_load.py) is for the sub-step h = dt / substeps (inf before it is known)."""
+    omega, zeta = 2.0 * math.pi * values["contact_hertz"], values["damping_ratio"]
+    limit = stable_load(omega, zeta, dt / substeps) if dt > 0.0 else math.inf
+    return np.array([1.0, omega, zeta, values["stick_speed"], values["push_out_speed"], limit])
+
 def contact_rate(pen: np.ndarray) -> float:
     """Stiffness rate of a penalty contact for the sub-step count: omega (1 + 2 zeta), the
     spring plus its damper (symplectic Euler gets omega h <= 0.33 at zeta = 1)."""

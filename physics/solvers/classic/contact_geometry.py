@@ -11,8 +11,9 @@ for translation and first order in the rotation of the normal.
 
 Each point's role this step is ``P.role``: INACTIVE, IMPULSE (resolved by
 impulses) or PENALTY (held by a penalty spring).  The point rows of these modes
-are ``classic_points``: POINT_FIELDS plus ``role`` and ``target`` (the
-restitution target speed of an impulse point).
+are ``classic_points``: POINT_FIELDS plus ``role``, ``target`` (the
+restitution target speed of an impulse point) and ``scale`` (the share of its
+penalty stiffness a point keeps when several load one body: penalty_load.py).
 """
 from __future__ import annotations
 
@@ -24,7 +25,8 @@ from ..._jit import kernel
 from ...constraints.point import point_rows, point_type, rel_velocity
 
 INACTIVE, IMPULSE, PENALTY = 0, 1, 2
-ClassicPoints = point_type("ClassicPoints", __name__, extra=(("role", np.int8), ("target", np.float64)))
+ClassicPoints = point_type("ClassicPoints", __name__, extra=(("role", np.int8), ("target", np.float64),
+                                                         ("scale", np.float64)))
 
 
 def classic_points(cap: int):

@@ -33,7 +33,7 @@ class HybridMode(ImpulseMode):
     def derive(self, ctx, par, store):
         pen = penalty_params(par.values)
         subs = self.substeps(store, ctx, par, contact_rate(pen) if store.contacts.n else 0.0)
-        self.derive_impulses(ctx, par, pen, subs)
+        self.derive_impulses(ctx, par, penalty_params(par.values, float(ctx.get("dt")), subs), subs)
 
     def stages(self, store, values, integrator):
         out = self.force_stages(store, integrator)[:-1] + ["forces:penalty_contacts (slow points)",

@@ -22,6 +22,7 @@ from .common import COMMON, IMPULSE_SETTINGS, NO_PENALTY, PROJECTIONS, SeedMode,
 from .contact_geometry import classify
 from .impulses import activate_impulses, position_share, save_velocities, solve_impulses
 from .integrators import advance, save_start
+from .penalty_load import scale_penalty_points
 from .projection import project
 
 ACTIVE_DEPTH = 1e-9  # a point takes part once it penetrates (seed: collision = overlap)
@@ -43,6 +44,7 @@ def impulse_step(ctx, par, B, C, S, P, R, hybrid, J, JW, JS):
         begin_classic_joints(c, p, B, J, JW)
     if hybrid:
         classify(B, C, nc, P, p.thr)
+        scale_penalty_points(B, C, nc, P, p.pen[5])
     advance(c, p, B, S, C, P, R, J, JW, JS)
     save_velocities(B, n, R)
     activate_impulses(B, C, nc, P, R, ACTIVE_DEPTH, hybrid, p.thr, c.gx, c.gy, p.energy_correction,

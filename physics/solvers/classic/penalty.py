@@ -17,6 +17,7 @@ from .common import COMMON, PENALTY_SETTINGS, SeedMode, contact_rate, penalty_pa
 from .classic_joints import begin_classic_joints, end_classic_joints
 from .contact_geometry import PENALTY, flag_all
 from .integrators import advance, save_start
+from .penalty_load import scale_penalty_points
 
 
 @kernel
@@ -28,6 +29,7 @@ def penalty_step(ctx, par, B, C, S, P, R, J, JW, JS):
     if J is not None:
         begin_classic_joints(c, p, B, J, JW)
     flag_all(C, c.nc, P, PENALTY)
+    scale_penalty_points(B, C, c.nc, P, p.pen[5])
     advance(c, p, B, S, C, P, R, J, JW, JS)
     return end_classic_joints(c, p, B, J, JW, JS)
 
@@ -40,8 +42,9 @@ class PenaltyMode(SeedMode):
 
     def derive(self, ctx, par, store):
         pen = penalty_params(par.values)
-        par.set("pen", pen)
-        par.set("substeps", self.substeps(store, ctx, par, contact_rate(pen) if store.contacts.n else 0.0))
+        subs = self.substeps(store, ctx, par, contact_rate(pen) if store.contacts.n else 0.0)
+        par.set("pen", penalty_params(par.values, float(ctx.get("dt")), subs))
+        par.set("substeps", subs)
 
     def step(self, ctx, par, store):
         R, P = self.work(store.bodies.n, store.contacts.n)

@@ -34,7 +34,10 @@ bounce returns at the speed it came in.  Contacts shallower than
 2 zeta v_p / omega (2.5 cm at 25 Hz, zeta 1, 2 m/s; resting contact sinks
 0.5 mm) are untouched.
 
-``pen``: [on, omega, zeta, stick_speed, push_out_speed].
+Several points on one body stiffen it beyond what the sub-step count allows for one
+point; penalty_load.py scales those points' stiffness and damping (``P.scale``).
+
+``pen``: [on, omega, zeta, stick_speed, push_out_speed, load limit (penalty_load.stable_load)].
 """
 from __future__ import annotations
 
@@ -83,9 +86,9 @@ def penalty_point(B, C, P, k, p, X, Q, V, W, X0, Q0, pen):
     dvx, dvy = rel_vel(V, W, C.a[k], C.b[k], rax, ray, rbx, rby)
     vn = dvx * nx + dvy * ny
     vt = -dvx * ny + dvy * nx
-    mn = P.mass_n[k, p]
+    mn = P.mass_n[k, p] * P.scale[k, p]  # scale < 1 only where several points load one body
     fn = max(0.0, normal_force(mn, omega, damping_ratio(C.e[k], pen[2]), d, vn, push_cap(C, k, p, pen)))
-    mt = P.mass_t[k, p]
+    mt = P.mass_t[k, p] * P.scale[k, p]
     ft = -mt * omega * (omega * C.stick[k, p] + 2.0 * vt)
     return d, fn, ft, vt, rax, ray, rbx, rby
 
@@ -140,8 +143,9 @@ def update_stick(B, C, nc, P, R, h, pen):
                 C.stick[k, p] = 0.0
                 continue
             s = C.stick[k, p] + h * vt
-            kt = P.mass_t[k, p] * pen[1] * pen[1]
+            mt = P.mass_t[k, p] * P.scale[k, p]
+            kt = mt * pen[1] * pen[1]
             smax = lim / kt if kt > 0.0 else 0.0
             C.stick[k, p] = min(smax, max(-smax, s))
-            ft = -P.mass_t[k, p] * pen[1] * (pen[1] * C.stick[k, p] + 2.0 * vt)  # with the new stretch
+            ft = -mt * pen[1] * (pen[1] * C.stick[k, p] + 2.0 * vt)  # with the new stretch
             C.jt[k, p] += min(lim, max(-lim, ft)) * h
