@@ -65,6 +65,21 @@ def surface_distance(x, v, r):
     return best - r
 
 
+def tilt(x, v, r, n):
+    """r (1 - |n . e_perp|) for the core edge of (v, r) nearest to x (0 for a circle)."""
+    if len(v) < 2 or r <= 0.0:
+        return 0.0
+    best, cos = math.inf, 1.0
+    for i in range(len(v) if len(v) > 2 else 1):
+        a, b = v[i], v[(i + 1) % len(v)]
+        e = b - a
+        t = min(1.0, max(0.0, float(np.dot(x - a, e) / np.dot(e, e))))
+        d = math.hypot(*(x - a - t * e))
+        if d < best:
+            best, cos = d, abs(n[0] * -e[1] + n[1] * e[0]) / math.hypot(*e)
+    return r * (1.0 - cos)
+
+
 def rows(world):
     """This step's contact rows (speculative ones too), without stepping."""
     p = world._pipeline
@@ -113,8 +128,12 @@ def test_every_shape_pair_agrees_with_the_reference_distance(ka, kb, x, y, angle
         # (beyond 5 cm, past what a solver lets happen) are a push-out direction, not geometry
         if s > 0 or s < -0.05:
             continue
-        assert abs(surface_distance(p - 0.5 * s * n, va, ra)) <= slack + tol
-        assert abs(surface_distance(p + 0.5 * s * n, vb, rb)) <= slack + tol
+        # a clipped point of a rounded side sits at its core point + r n, as in Box2D's
+        # b2ClipPolygons: off the true surface by r (1 - cos theta), theta between the manifold
+        # normal and that core edge's normal (found by hypothesis: capsule under a box tilted
+        # 0.37 rad to its axis, 1.4 cm = 0.2 (1 - cos 0.37))
+        assert abs(surface_distance(p - 0.5 * s * n, va, ra)) <= slack + tilt(p, va, ra, n) + tol
+        assert abs(surface_distance(p + 0.5 * s * n, vb, rb)) <= slack + tilt(p, vb, rb, n) + tol
 
 
 @pytest.mark.parametrize("kb", DYNAMIC)
