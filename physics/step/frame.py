@@ -10,7 +10,10 @@ from ..geometry.transform import update_geometry
 from .checkpoint import count_nonfinite, save_state
 
 
-@kernel
+# _nrt=False (both kernels, and the helpers they call): they allocate nothing, and without
+# numba's runtime the per-fixture and per-body reads of the table columns cost no atomic
+# reference-count updates (pyramid20: begin_step 280 us -> 90 us on the loaded 2-core VM)
+@kernel(_nrt=False)
 def begin_step(ctx, B, F, V, nf, X, Q, Vel, W):
     """Save the last finite state, then refresh the ``nf`` fixtures' world geometry and AABBs."""
     c = ctx[0]
@@ -18,7 +21,7 @@ def begin_step(ctx, B, F, V, nf, X, Q, Vel, W):
     update_geometry(B, F, V, c.n, nf, c.dt, c.spec)
 
 
-@kernel
+@kernel(_nrt=False)
 def end_step(ctx, B, S, bad, why):
     """Count bodies whose state or energy is not finite (slots into ``bad``, the reason in
     ``why``: checkpoint.count_nonfinite); clear user forces when all is finite."""

@@ -32,9 +32,10 @@ BIAS = 1e-3          # reference-face hysteresis, relative to the smaller body
 def pair_keys(F, pairs, npairs):
     """Keys of the fixture pairs oriented by id (lower id first)."""
     keys = np.empty(npairs, np.int64)
+    fid = F.id  # bound once: each F.id in the loop would be a reference-count pair (runtime on here)
     for k in range(npairs):
-        ia = F.id[pairs[k, 0]]
-        ib = F.id[pairs[k, 1]]
+        ia = fid[pairs[k, 0]]
+        ib = fid[pairs[k, 1]]
         if ia > ib:
             ia, ib = ib, ia
         keys[k] = (ia << 32) | ib
