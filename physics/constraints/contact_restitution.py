@@ -22,26 +22,47 @@ the last sub-step.  Two things make that bounce low (issue 18: a 1 m drop at e =
   with the target speeds -e v_n0 of both.
 
 A point bounces once per step, only if it hit faster than ``p.restitution_threshold`` and pushed
-(a speculative point never reached does not bounce).
+(a speculative point never reached does not bounce).  Bodies bouncing together in one sub-step
+(a body squeezed between two others) are capped together (restitution_cluster.py).
 """
 from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .._jit import kernel
 from .block import solve_block
 from .body_rows import II, IM, VX, VY, W
 from .contact_soft import BLOCK, BOUNCED, INV_DET, JN, K11, K12, K22, KE0, MASS_N, MAXJ, NX, NY, PT, RNA, RNB, VN0
+from .restitution_cluster import cap_clusters, save_velocities
 
 
 @kernel
-def restitution_contacts(c, p, SB, C, R):
-    """Bounce the points that first pushed since the last call (see the module doc)."""
+def restitution_contacts(c, p, SB, C, R, V0):
+    """Bounce the points that first pushed since the last call (see the module doc), then cap
+    each cluster of bodies bouncing together at its energy at the sub-step start ``V0``
+    (restitution_cluster.py)."""
     threshold = p.restitution_threshold
-    for k in range(c.nc):
-        e = C.e[k]
-        if e != 0.0:
-            _restitution(SB, C, k, R, threshold, e)
+    nc = c.nc
+    due = np.zeros(nc, dtype=np.bool_)
+    some = False
+    for k in range(nc):
+        if C.e[k] != 0.0 and (_due(R, k, 0, threshold) or (C.count[k] == 2 and _due(R, k, PT, threshold))):
+            due[k] = True
+            some = True
+    if not some:
+        return
+    n = c.n
+    VR = np.empty((n, 3))
+    save_velocities(SB, n, VR)
+    J0 = np.empty((nc, 2))
+    for k in range(nc):
+        J0[k, 0] = R[k, JN]
+        J0[k, 1] = R[k, PT + JN]
+        if due[k]:
+            _restitution(SB, C, k, R, threshold, C.e[k])
+    cap_clusters(SB, C, nc, n, R, due, V0, VR, J0)
 
 
 @kernel(inline="always")

@@ -24,6 +24,8 @@ compiled without them.
 """
 from __future__ import annotations
 
+import numpy as np
+
 from ..._jit import kernel
 from ...constraints.body_rows import (gather_bodies, integrate_row_positions, integrate_row_velocities,
                                       load_velocities, store_velocities)
@@ -34,6 +36,7 @@ from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
+from ...constraints.restitution_cluster import save_velocities
 from ...constraints.springs.substep import solve_springs
 
 GLOBAL = 0  # index of "global" in the joint_solver setting's choices
@@ -61,12 +64,20 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS):
     eq_global = p.joint_solver == GLOBAL
     project = J is not None and eq_global and p.joint_projection and JS.dims[0] > 0
     iterations = p.iterations
+    bouncy = False  # any restitution: the sub-step's start velocities cap the bounces
+    for k in range(c.nc):
+        if C.e[k] != 0.0:
+            bouncy = True
+            break
+    V0 = np.empty((n if bouncy else 0, 3))
     for _ in range(p.substeps):
         integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
         if c.ns > 0:  # the spring solver works on the body table
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
+        if bouncy:
+            save_velocities(SB, n, V0)
         warm_start_contacts(c, SB, C, R)
         if J is not None:
             warm_start_joints(c, B, J, JW)
@@ -82,7 +93,8 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS):
             solve_contacts(c, p, SB, C, R, False, True)
             if J is not None:
                 solve_joints(c, B, J, JW, JS, False, p.inv_h, eq_global)
-        restitution_contacts(c, p, SB, C, R)  # in the sub-step of first touch
+        if bouncy:
+            restitution_contacts(c, p, SB, C, R, V0)  # in the sub-step of first touch
     store_impulses(c, C, R)
     if J is not None:
         broken = store_joints(c, J, JW, p.inv_h)
