@@ -21,6 +21,7 @@ import math
 import numpy as np
 
 from .._jit import kernel
+from ..store.union_find import find_root, union_roots
 from .body_rows import II, IM, VX, VY, W
 from .contact_soft import JN, PT
 
@@ -52,14 +53,6 @@ def _dynamic(SB, i):
 
 
 @kernel
-def _find(parent, i):
-    while parent[i] != i:
-        parent[i] = parent[parent[i]]
-        i = parent[i]
-    return i
-
-
-@kernel
 def clusters(SB, C, nc, n, due):
     """(parent array, member flags) of the dynamic bodies joined by the manifolds with ``due[k]``."""
     parent = np.arange(n)
@@ -76,10 +69,7 @@ def clusters(SB, C, nc, n, due):
         if db:
             member[b] = 1
         if da and db:
-            ra = _find(parent, a)
-            rb = _find(parent, b)
-            if ra != rb:
-                parent[ra] = rb
+            union_roots(parent, a, b)
     return parent, member
 
 
@@ -93,7 +83,7 @@ def _scales(SB, C, nc, n, due, V0, VR, parent, member):
     for i in range(n):
         if member[i] == 0:
             continue
-        r = _find(parent, i)
+        r = find_root(parent, i)
         cap[r] += _energy(SB, i, V0[i, 0], V0[i, 1], V0[i, 2])
         e0[r] += _energy(SB, i, VR[i, 0], VR[i, 1], VR[i, 2])
         dx = SB[i, VX] - VR[i, 0]
@@ -111,7 +101,7 @@ def _scales(SB, C, nc, n, due, V0, VR, parent, member):
     for k in range(nc):
         if due[k] and C.e[k] > 1.0:
             x = C.a[k] if _dynamic(SB, C.a[k]) else C.b[k]
-            elastic[_find(parent, x)] = 0
+            elastic[find_root(parent, x)] = 0
     s = np.ones(n)
     for r in range(n):
         if member[r] == 0 or parent[r] != r or elastic[r] == 0:
@@ -134,7 +124,7 @@ def cap_clusters(SB, C, nc, n, R, due, V0, VR, J0):
     for i in range(n):
         if member[i] == 0:
             continue
-        f = s[_find(parent, i)]
+        f = s[find_root(parent, i)]
         if f < 1.0:
             SB[i, VX] = VR[i, 0] + f * (SB[i, VX] - VR[i, 0])
             SB[i, VY] = VR[i, 1] + f * (SB[i, VY] - VR[i, 1])
@@ -143,7 +133,7 @@ def cap_clusters(SB, C, nc, n, R, due, V0, VR, J0):
         if not due[k]:
             continue
         x = C.a[k] if _dynamic(SB, C.a[k]) else C.b[k]
-        f = s[_find(parent, x)]
+        f = s[find_root(parent, x)]
         if f < 1.0:
             for q in range(C.count[k]):
                 o = q * PT + JN

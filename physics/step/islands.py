@@ -19,24 +19,7 @@ import numpy as np
 from .._jit import kernel
 from ..store import DYNAMIC, KINEMATIC
 from ..store.joints import BROKEN, MOUSE
-
-
-@kernel
-def _find(parent, i):
-    while parent[i] != i:
-        parent[i] = parent[parent[i]]
-        i = parent[i]
-    return i
-
-
-@kernel
-def _union(parent, a, b):
-    ra = _find(parent, a)
-    rb = _find(parent, b)
-    if ra < rb:
-        parent[rb] = ra
-    elif rb < ra:
-        parent[ra] = rb
+from ..store.union_find import find_root, union_roots
 
 
 @kernel
@@ -109,7 +92,7 @@ def _joint_links(B, n, JL, parent):
                         _wake_island(B, n, s)
                     B.sleep_t[s] = 0.0
         if b >= 0 and B.kind[a] == DYNAMIC and B.kind[b] == DYNAMIC:
-            _union(parent, a, b)
+            union_roots(parent, a, b)
 
 
 @kernel
@@ -174,7 +157,7 @@ def update_islands(ctx, B, C, S, JL, parent, min_t, label):
         ka = B.kind[a]
         kb = B.kind[b]
         if ka == DYNAMIC and kb == DYNAMIC:
-            _union(parent, a, b)
+            union_roots(parent, a, b)
         # resting on a moving kinematic body is not rest
         elif ka == KINEMATIC and _moving(B, a) and kb == DYNAMIC:
             B.sleep_t[b] = 0.0
@@ -184,22 +167,22 @@ def update_islands(ctx, B, C, S, JL, parent, min_t, label):
         a = S.a[k]
         b = S.b[k]
         if b >= 0 and B.kind[a] == DYNAMIC and B.kind[b] == DYNAMIC:
-            _union(parent, a, b)
+            union_roots(parent, a, b)
     if JL.shape[0]:
         _joint_links(B, n, JL, parent)
     for i in range(n):
         min_t[i] = np.inf
     for i in range(n):
         if B.kind[i] == DYNAMIC and B.awake[i] == 1:
-            r = _find(parent, i)
+            r = find_root(parent, i)
             if B.sleep_t[i] < min_t[r]:
                 min_t[r] = B.sleep_t[i]
     awake = 0
     for i in range(n):
         if B.kind[i] == DYNAMIC and B.awake[i] == 1:
-            r = _find(parent, i)
+            r = find_root(parent, i)
             if min_t[r] >= time_to_sleep:
-                # the root is the island's smallest slot (see _union), so it comes first
+                # the root is the island's smallest slot (see union_roots), so it comes first
                 if i == r:
                     label[0] += 1
                     B.island[i] = label[0]
