@@ -134,13 +134,17 @@ class Editor:
 
     def set_property(self, item, field, value) -> bool:
         """``item.field = value`` for a body, spring or joint, undoable; a refusal is shown, not raised."""
+        return self.try_edit(SetProperty(self, item, field, value), field)
+
+    def try_edit(self, cmd, label: str) -> bool:
+        """Run an editing command; a refusal sets ``edit_error`` and is shown as ``label``'s, not raised."""
         try:
-            self.execute(SetProperty(self, item, field, value))
+            self.execute(cmd)
             self.edit_error = ""
             return True
         except ValueError as exc:
             self.edit_error = f"refused: {exc}"
-            self.notify(f"{field} {self.edit_error}", error=True)
+            self.notify(f"{label} {self.edit_error}", error=True)
             return False
 
     def drop_shape(self, name, p):

@@ -36,14 +36,7 @@ def body_text(b) -> str:
 
 def set_fixture(app, body, index, field, value) -> bool:
     ed = app.editor
-    try:
-        ed.execute(SetFixture(ed, body, index, field, value))
-        ed.edit_error = ""
-        return True
-    except ValueError as exc:
-        ed.edit_error = f"refused: {exc}"
-        ed.notify(f"fixture {index} {field} {ed.edit_error}", error=True)
-        return False
+    return ed.try_edit(SetFixture(ed, body, index, field, value), f"fixture {index} {field}")
 
 
 def parse_bits(text: str):
