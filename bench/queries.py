@@ -9,7 +9,8 @@ polygons) scattered over a square of density ~0.25 bodies/m^2 and reports, best 
 - ``ray_cast_many`` of ``--rays`` random rays of length 20 m (target < 50 ms), once with the
   query tree already built and once including its build after a step;
 - one ``world.ray_cast(first=True)`` from Python (target < 20 us);
-- ``query_aabb`` of a 2 m and a 20 m box (it scales with what it returns);
+- ``query_aabb`` of a 2 m and a 20 m box, and of a 2 m box in a world a tenth the size (it scales
+  with what it returns, not with the world);
 - ``apply_impulses`` on every body.
 """
 from __future__ import annotations
@@ -78,6 +79,10 @@ def main(argv=None) -> dict:
         found = len(w.query_aabb((c, c), (c + size, c + size)))
         res[f"query_aabb_{size:g}m_us"] = 1e6 * best(lambda: w.query_aabb((c, c), (c + size, c + size)), a.repeat)
         res[f"query_aabb_{size:g}m_found"] = found
+    small = build(a.bodies // 10)  # the same density, a tenth of the bodies: the box query should not care
+    cs = float(np.sqrt(a.bodies // 10 / 0.25)) / 2
+    small.query_aabb((cs, cs), (cs + 2.0, cs + 2.0))
+    res["query_aabb_2m_tenth_world_us"] = 1e6 * best(lambda: small.query_aabb((cs, cs), (cs + 2.0, cs + 2.0)), a.repeat)
     J = np.zeros((len(ids), 2))
     res["apply_impulses_all_ms"] = 1e3 * best(lambda: w.apply_impulses(ids, J), a.repeat)
     print(f"{a.bodies} bodies, {a.rays} rays (best of {a.repeat})")

@@ -25,6 +25,29 @@ def _bits(category, mask):
     return _U64(filter_bits(category, "category")), _U64(filter_bits(mask, "mask"))
 
 
+_DEFAULT_BITS = _bits(0x1, 0xFFFF)
+_PLAIN = (float, int)  # exact types: bool and numpy scalars take the checked path
+_BIG = 1.7e308  # below float max, so the comparisons reject inf, nan and ints beyond float range
+
+
+def _filter(category, mask):
+    """The query's filter bits; the default filter skips the checks (it is valid by construction)."""
+    if type(category) is int and type(mask) is int and category == 0x1 and mask == 0xFFFF:
+        return _DEFAULT_BITS
+    return _bits(category, mask)
+
+
+def _pair(value, field: str) -> tuple:
+    """``value`` as two finite floats; plain tuples of floats take a fast path (a game's rays call
+    this per ray), anything else goes through validate.finite_vec and its errors."""
+    if (type(value) is tuple or type(value) is list) and len(value) == 2:
+        x, y = value
+        if type(x) in _PLAIN and type(y) in _PLAIN and -_BIG < x < _BIG and -_BIG < y < _BIG:
+            return float(x), float(y)  # finite, and an int this small converts exactly enough
+    v = finite_vec(value, field)
+    return float(v[0]), float(v[1])
+
+
 def _points(value, field: str) -> np.ndarray:
     """An (n, 2) array of finite numbers, or ValueError naming ``field`` and the first bad row."""
     a = np.asarray(value, dtype=np.float64)
@@ -51,21 +74,21 @@ class QueriesMixin:
         one-sided (a ray from behind passes).  ``category``/``mask`` filter like a fixture's.
         ValueError for a non-finite point or bad filter bits.
         """
-        p, e = finite_vec(start, "start"), finite_vec(end, "end")
-        cat, msk = _bits(category, mask)
+        px, py = _pair(start, "start")
+        ex, ey = _pair(end, "end")
+        cat, msk = _filter(category, mask)
         qs = query_state(self)
-        F = self._store.fixtures.view
-        d = e - p
-        m = cast_one(F, qs.wv, qs.wn, qs.wc, qs.nb, qs.info, qs.order, p[0], p[1], d[0], d[1], bool(first),
+        dx, dy = ex - px, ey - py
+        m = cast_one(qs.qf, qs.wv, qs.wn, qs.wc, qs.nb, qs.info, qs.order, px, py, dx, dy, bool(first),
                      cat, msk, qs.slots, qs.ts, qs.ns)
-        slots, ts, ns = qs.slots[:m], qs.ts[:m], qs.ns[:m]
-        idx = np.lexsort((slots, ts))
+        if m == 0:
+            return []
+        order = range(1) if m == 1 else np.lexsort((qs.slots[:m], qs.ts[:m]))
         out = []
-        for k in idx:
-            fx = self._fixtures_of([slots[k]])[0]
-            t = float(ts[k])
-            out.append(RayHit(fx, fx.body, (float(p[0] + t * d[0]), float(p[1] + t * d[1])),
-                              (float(ns[k, 0]), float(ns[k, 1])), t))
+        for k in order:
+            fx = self._fixtures_of([qs.slots[k]])[0]
+            t = float(qs.ts[k])
+            out.append(RayHit(fx, fx.body, (px + t * dx, py + t * dy), (float(qs.ns[k, 0]), float(qs.ns[k, 1])), t))
         return out
 
     def ray_cast_many(self, starts, ends, category=0x1, mask=0xFFFF) -> np.ndarray:
@@ -83,7 +106,7 @@ class QueriesMixin:
         slot = np.empty(n, np.int32)
         t = np.empty(n)
         out = np.zeros(n, RAY_DTYPE)
-        cast_many(F, qs.wv, qs.wn, qs.wc, qs.nb, qs.info, qs.order, s, e, cat, msk, slot, t, out["normal"])
+        cast_many(qs.qf, qs.wv, qs.wn, qs.wc, qs.nb, qs.info, qs.order, s, e, cat, msk, slot, t, out["normal"])
         hit = slot >= 0
         out["fraction"] = t
         out["fixture"] = np.where(hit, F.id[np.maximum(slot, 0)] if st.fixtures.n else -1, -1)
@@ -93,27 +116,27 @@ class QueriesMixin:
         return out
 
     def _overlap_slots(self, P, r, category, mask) -> np.ndarray:
-        cat, msk = _bits(category, mask)
+        cat, msk = _filter(category, mask)
         qs = query_state(self)
-        m = overlapping(self._store.fixtures.view, qs.wv, qs.wc, qs.box, qs.nb, qs.info, qs.order, P, r,
+        m = overlapping(qs.qf, qs.wv, qs.wc, qs.box, qs.nb, qs.info, qs.order, P, r,
                         cat, msk, qs.slots)
         return qs.slots[:m]
 
     def query_aabb(self, lower, upper, category=0x1, mask=0xFFFF) -> list:
         """Fixtures whose shapes overlap the box from ``lower`` to ``upper`` (m; exact shapes, not
         their boxes; touching counts), in table order.  ValueError for a non-finite or inverted box."""
-        lo, hi = finite_vec(lower, "lower"), finite_vec(upper, "upper")
-        if np.any(hi < lo):
-            raise ValueError(f"upper: must be >= lower in x and y, got lower {lo.tolist()} upper {hi.tolist()}")
-        P = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
-        if np.any(hi == lo):  # a flat box is a segment or a point (a 4-gon of zero area is not convex)
+        (x0, y0), (x1, y1) = _pair(lower, "lower"), _pair(upper, "upper")
+        if x1 < x0 or y1 < y0:
+            raise ValueError(f"upper: must be >= lower in x and y, got lower {[x0, y0]} upper {[x1, y1]}")
+        P = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
+        if x1 == x0 or y1 == y0:  # a flat box is a segment or a point (a 4-gon of zero area is not convex)
             P = np.unique(P, axis=0)
         return self._fixtures_of(self._overlap_slots(P, 0.0, category, mask))
 
     def query_point_all(self, point, category=0x1, mask=0xFFFF) -> list:
         """Every fixture containing world ``point`` (boundary included), in table order
         (World.query_point returns only the topmost body).  ValueError for a non-finite point."""
-        P = finite_vec(point, "point").reshape(1, 2)
+        P = np.array([_pair(point, "point")])
         return self._fixtures_of(self._overlap_slots(P, 0.0, category, mask))
 
     def overlap(self, shape, position=(0.0, 0.0), angle: float = 0.0, category=0x1, mask=0xFFFF) -> list:
@@ -131,7 +154,7 @@ class QueriesMixin:
         cat, msk = _bits(category, mask)
         qs = query_state(self)
         hit = np.empty(5)
-        f = _shape_cast(self._store.fixtures.view, qs.wv, qs.wc, qs.box, qs.nb, qs.info, qs.order, P, r,
+        f = _shape_cast(qs.qf, qs.wv, qs.wc, qs.box, qs.nb, qs.info, qs.order, P, r,
                         T[0], T[1], cat, msk, qs.slots, hit)
         if f < 0:
             return None
