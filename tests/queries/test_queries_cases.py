@@ -120,3 +120,27 @@ def test_empty_world_queries():
     assert w.ray_cast((0, 0), (1, 1)) == [] and w.query_aabb((0, 0), (1, 1)) == []
     assert w.ray_cast_many(np.zeros((2, 2)), np.ones((2, 2)))["fixture"].tolist() == [-1, -1]
     assert w.shape_cast(physics.Circle(1), (0, 0), 0, (1, 0)) is None
+
+
+@pytest.mark.parametrize("bad", [(math.nan, 0.0), (0.0, math.inf), (10 ** 400, 0), (0, -10 ** 400)])
+def test_points_refused_whatever_their_form(bad):
+    # tuples of plain floats and ints take a fast path in ray_cast/query_aabb; it must refuse as
+    # the general validator does, naming the argument
+    w, *_ = _world()
+    with pytest.raises(ValueError, match="start"):
+        w.ray_cast(bad, (0.0, 0.0))
+    with pytest.raises(ValueError, match="upper"):
+        w.query_aabb((0.0, 0.0), bad)
+    with pytest.raises(ValueError, match="point"):
+        w.query_point_all(list(bad))
+
+
+def test_every_point_form_gives_the_same_hits():
+    w, *_ = _world()
+    forms = [((0, 10), (0, -10)), ((0.0, 10.0), (0.0, -10.0)), ([0, 10], [0, -10]),
+             (np.array([0.0, 10.0]), np.array([0.0, -10.0])), ((np.float32(0), np.int64(10)), (0.0, -10.0))]
+    ref = w.ray_cast(*forms[0])
+    assert len(ref) == 2
+    for p, e in forms[1:]:
+        assert w.ray_cast(p, e) == ref
+    assert w.query_aabb((-1, 2), (1, 4)) == w.query_aabb(np.array([-1.0, 2.0]), [1.0, 4.0])
