@@ -124,6 +124,7 @@ class Checkpoint:
         self.Q = np.zeros(cap)
         self.V = np.zeros((cap, 2))
         self.W = np.zeros(cap)
+        self.count = np.zeros(cap, dtype=np.int64)  # scratch: contact manifolds per body (energy_sums)
 
     def ensure(self, n):
         if n > len(self.Q):

@@ -40,6 +40,7 @@ import numpy as np
 
 from ..store import DYNAMIC, KINEMATIC
 from ..store.joints import BROKEN, MOTOR
+from .energy_sums import ELASTIC, EXTERNAL, KE, MASS, PE, PUSH, SUMS
 
 #: speed (m/s) per contact manifold at which push-out may separate overlapping bodies
 PUSH_SPEED = 10.0
@@ -101,49 +102,67 @@ def external_input(world) -> bool:
     kin = B.kind[:n] == KINEMATIC
     if kin.any() and (B.v[:n][kin].any() or B.w[:n][kin].any()):
         return True
-    J = store.joints.view
+    return joints_working(world)
+
+
+def joints_working(world) -> bool:
+    """A working motor or mouse joint (one that can supply energy) that is not broken."""
+    store = world._store
     nj = store.joints.n
     if not nj:
         return False
+    J = store.joints.view
     working = (J.max_motor[:nj] > 0.0) | ((J.kind[:nj] == MOTOR) & (J.max_torque[:nj] > 0.0))
     return bool(np.any(working & ((J.flags[:nj] & BROKEN) == 0)))
 
 
+def _scale(sums) -> tuple[float, float]:
+    """(E, S) from a sums array of energy_sums.guard_sums."""
+    ke, pe, elastic = sums[KE], sums[PE], sums[ELASTIC]
+    return ke + pe + elastic, ke + elastic + abs(pe)
+
+
 class EnergyGuard:
-    """The reference energy and the bound of the current run without external input."""
+    """The reference energy and the bound of the current run without external input.
+
+    ``start`` and ``end`` are the sums (energy_sums.py) that the step's opening and closing
+    kernels fill; the functions above compute the same quantities in numpy for tests and tools.
+    """
 
     def __init__(self):
         self.last = math.nan  # energy at the end of the last accepted step (nan: none)
         self.e0 = self.s0 = self.push = 0.0
         self.active = False
+        self.start = np.zeros(SUMS)
+        self.end = np.zeros(SUMS)
 
     def begin(self, world) -> None:
-        """Before a step: start a new reference after an edit or an external input."""
+        """Before a step (after begin_step filled ``self.start``): start a new reference after an
+        edit or an external input."""
         growth = world.energy_guard
-        if growth <= 0.0 or external_input(world):
+        if growth <= 0.0 or self.start[EXTERNAL] or joints_working(world):
             self.active = False
             self.last = math.nan
             return
-        e, s = energies(world)
+        e, s = _scale(self.start)
         if not (e == self.last and self.active):
             self.e0, self.s0, self.push = e, s, 0.0
         self.active = True
-        self.start = e
-
-    def bound(self, world, scale: float, dt: float) -> float:
-        """The most energy the world may have now, at energy scale ``scale`` after a step of ``dt`` (J)."""
-        self.push = max(self.push, push_allowance(world))
-        return self.e0 + world.energy_guard * (self.s0 + 0.5 * scale) + self.push + noise_floor(world, dt)
+        self.e_start = e
 
     def excess(self, world, dt: float) -> tuple[float, float] | None:
-        """After a step: (energy, bound) when the energy is beyond the bound, else None."""
+        """After a step (end_step filled ``self.end``): (energy, bound) when the energy is beyond
+        the bound, else None."""
         if not self.active:
             return None
-        e, s = energies(world)
-        limit = self.bound(world, s, dt)
+        e, s = _scale(self.end)
+        self.push = max(self.push, float(self.end[PUSH]))
+        g = float(np.hypot(*world._gravity))
+        floor = self.end[MASS] * (g * world.linear_slop + 0.5 * (g * dt) ** 2 + 0.5 * NOISE_SPEED ** 2)
+        limit = self.e0 + world.energy_guard * (self.s0 + 0.5 * s) + self.push + floor
         # rounding: E sums terms of size up to S
         if e - limit > 1e-12 * (s + self.s0 + abs(self.e0)) + 1e-300:
-            self.last = self.start  # the step is reverted to the state it started from
+            self.last = self.e_start  # the step is reverted to the state it started from
             return e, limit
         self.last = e
         return None

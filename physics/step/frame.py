@@ -8,27 +8,35 @@ from __future__ import annotations
 from .._jit import kernel
 from ..geometry.transform import update_geometry
 from .checkpoint import count_nonfinite, save_state
+from .energy_guard import PUSH_SPEED
+from .energy_sums import PUSH, guard_sums, push_sum
 
 
 # _nrt=False (both kernels, and the helpers they call): they allocate nothing, and without
 # numba's runtime the per-fixture and per-body reads of the table columns cost no atomic
 # reference-count updates (pyramid20: begin_step 280 us -> 90 us on the loaded 2-core VM)
 @kernel(_nrt=False)
-def begin_step(ctx, B, F, V, nf, X, Q, Vel, W):
-    """Save the last finite state, then refresh the ``nf`` fixtures' world geometry and AABBs."""
+def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums):
+    """Save the last finite state, then refresh the ``nf`` fixtures' world geometry and AABBs;
+    the energy guard's sums of the state the step starts from into ``sums`` (energy_sums.py)."""
     c = ctx[0]
     save_state(B, c.n, X, Q, Vel, W)
+    guard_sums(B, S, c.n, c.ns, c.gx, c.gy, sums)
     update_geometry(B, F, V, c.n, nf, c.dt, c.spec)
 
 
 @kernel(_nrt=False)
-def end_step(ctx, B, S, bad, why):
+def end_step(ctx, B, S, bad, why, Ca, Cb, nc, count, sums):
     """Count bodies whose state or energy is not finite (slots into ``bad``, the reason in
-    ``why``: checkpoint.count_nonfinite); clear user forces when all is finite."""
+    ``why``: checkpoint.count_nonfinite); when all is finite, the energy guard's sums of the
+    state the step ends in (with the push-out allowance of its ``nc`` contacts) into ``sums``,
+    and clear user forces."""
     c = ctx[0]
     n = c.n
     k = count_nonfinite(B, n, S, c.ns, bad, why)
     if k == 0:
+        guard_sums(B, S, n, c.ns, c.gx, c.gy, sums)
+        sums[PUSH] = push_sum(B, n, Ca, Cb, nc, count, PUSH_SPEED)
         for i in range(n):
             B.f[i, 0] = 0.0
             B.f[i, 1] = 0.0

@@ -144,9 +144,10 @@ class Pipeline:
         B = store.bodies.view
         ck = self._checkpoint
         ck.ensure(n)
-        self._guard.begin(world)
+        guard = self._guard
         begin_step(self.ctx.array, B, store.fixtures.view, store.verts.view, store.fixtures.n,
-                   ck.X, ck.Q, ck.V, ck.W)
+                   ck.X, ck.Q, ck.V, ck.W, store.springs.view, guard.start)
+        guard.begin(world)
         self.profile.stamp("begin")
         stage = "collide"
         try:
@@ -170,10 +171,12 @@ class Pipeline:
                                   "reverted to the state before the step", stage=stage)
             world.fault = err
             raise err from exc
-        k = end_step(self.ctx.array, B, store.springs.view, ck.bad, ck.why)
+        C = store.contacts.cur
+        k = end_step(self.ctx.array, B, store.springs.view, ck.bad, ck.why, C.a, C.b, store.contacts.n,
+                     ck.count, guard.end)
         if k:
             self._fail(world, ck.slots(k))
-        gained = self._guard.excess(world, dt)
+        gained = guard.excess(world, dt)
         if gained is not None:
             self._gained(world, *gained)
         self.profile.stamp("finish")
