@@ -5,6 +5,7 @@ from imgui_bundle import imgui
 
 from .base import Section, record, wrapped
 from .style import AMBER, DIM, ENTER, RED
+from .timeline import timeline_slider
 
 
 class SimulationSection(Section):
@@ -29,6 +30,7 @@ class SimulationSection(Section):
         if ch:
             sim.time_scale = v
         self.speed(sim)
+        timeline_slider(app)
         ch, hz = imgui.input_float("step rate (Hz)", 1.0 / w.dt, 10.0, 60.0, "%.1f", ENTER)
         record(app, "sim:step_rate")
         if ch:

@@ -1,0 +1,44 @@
+"""The timeline slider of the Simulation section: drag it to see the world as it was up to a
+minute of simulated time ago (``app.timeline``); Play continues from the moment shown."""
+from __future__ import annotations
+
+from imgui_bundle import imgui
+
+from .base import record
+from .style import DIM
+
+
+def scrub(app, t):
+    """Show the world at simulated time ``t`` (the snapshot at or before it), paused.  The
+    trails, the stats series and the plotted quantities start again from there (their time
+    would run backwards otherwise)."""
+    app.sim.running = False
+    app.sim.accumulator = 0.0
+    shown = app.timeline.scrub(app.world, t)
+    if shown is None:
+        app.notices.notify("timeline: nothing to go back to (an edit changed the bodies or joints)", error=True)
+        return
+    for tr in app.editor.tracers.items:
+        tr.clear()
+    app.editor.tracers._last_time = None
+    app.sampler.clear()
+    app.recorder.clear(keep_series=True)
+
+
+def timeline_slider(app):
+    """The slider over the snapshots' time range (or a line saying how to get one)."""
+    tl = app.timeline
+    rng = tl.range()
+    app.ui_values["timeline"] = None
+    if rng is None or rng[1] <= rng[0]:
+        imgui.text_colored(DIM, f"timeline: playing keeps the last {tl.span:.0f} s to scrub back through")
+        return
+    t = min(max(app.world.time, rng[0]), rng[1])
+    ch, v = imgui.slider_float("timeline", t, rng[0], rng[1], "%.2f s")
+    record(app, "sim:timeline")
+    app.ui_values["timeline"] = t
+    if imgui.is_item_hovered():
+        imgui.set_tooltip(f"drag back through the last {rng[1] - rng[0]:.1f} s; Play continues from "
+                          "the moment shown (what came after it is dropped)")
+    if ch:
+        scrub(app, v)

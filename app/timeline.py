@@ -1,0 +1,96 @@
+"""The timeline (issue 15): while the simulation plays, a snapshot of the world every
+``interval`` seconds of simulated time, the last ``span`` seconds of them in a bounded ring.
+Scrubbing restores the snapshot at or before the chosen time (``world.restore``: bit-identical
+continuation); stepping on from a scrubbed moment discards the snapshots after it.  The core
+restores only into a world with the same bodies, fixtures, springs and joints, so an edit that
+changes the topology (add, delete, the mouse drag's joint) clears the timeline; so does a reset
+or another document.  Cost for a 1000-body scene: docs/sandbox.md, "Timeline"."""
+from __future__ import annotations
+
+from collections import deque
+
+from physics.snapshot import check
+
+INTERVAL = 0.25     # s of simulated time between snapshots
+SPAN = 60.0         # s of simulated time kept
+
+
+class Timeline:
+    """Snapshots ``(time, snapshot)`` oldest first; ``cursor`` is the index restored by the last
+    scrub (None: the world is at or after the newest snapshot)."""
+
+    def __init__(self, interval=INTERVAL, span=SPAN):
+        self.interval = float(interval)
+        self.span = float(span)
+        self.entries: deque = deque(maxlen=int(round(span / interval)) + 1)
+        self.cursor = None
+        self.cleared = 0              # how many times an edit or reset cleared it (the status file shows it)
+        self._signature = None
+
+    def __len__(self):
+        return len(self.entries)
+
+    def times(self):
+        return [t for t, _ in self.entries]
+
+    def range(self):
+        """(oldest, newest) snapshot time, or None when empty."""
+        return (self.entries[0][0], self.entries[-1][0]) if self.entries else None
+
+    def record(self, world):
+        """Called while playing, before and after a frame's steps.  If the world steps on from a
+        scrubbed moment, the snapshots after it go first; then a snapshot if ``interval`` has
+        passed since the newest one (half a step early, so float sums of dt do not skip one)."""
+        if self.cursor is not None:
+            while len(self.entries) > self.cursor + 1:
+                self.entries.pop()
+            self.cursor = None
+        t = world.time
+        if not self.entries or t >= self.entries[-1][0] + self.interval - 0.5 * world.dt:
+            self.entries.append((t, world.snapshot()))
+
+    def watch(self, world, signature):
+        """Clear the timeline if the world's topology changed.  ``signature`` is anything that
+        changes with every edit (history version, counts of bodies and joints): only then are the
+        world's ids compared with the newest snapshot's.  Returns True if it cleared."""
+        if signature == self._signature:
+            return False
+        self._signature = signature
+        if not self.entries:
+            return False
+        try:
+            check(world, self.entries[-1][1])
+        except ValueError:
+            self.clear()
+            return True
+        return False
+
+    def scrub(self, world, t):
+        """Restore the newest snapshot taken at or before time ``t`` (the oldest if ``t`` is before
+        it); returns its time, or None if there is none or the core refused (then cleared)."""
+        if not self.entries:
+            return None
+        k = 0
+        for i, (ti, _) in enumerate(self.entries):
+            if ti <= t + 1e-9:
+                k = i
+        try:
+            world.restore(self.entries[k][1])
+        except ValueError:
+            self.clear()
+            return None
+        self.cursor = k
+        return self.entries[k][0]
+
+    def clear(self):
+        """Drop every snapshot (a topology edit, a reset, another document)."""
+        if self.entries:
+            self.cleared += 1
+        self.entries.clear()
+        self.cursor = None
+
+    def describe(self) -> dict:
+        """For the status file: how many snapshots, their time range, the scrub cursor."""
+        rng = self.range()
+        return {"n": len(self.entries), "range": list(rng) if rng else None, "cursor": self.cursor,
+                "cleared": self.cleared, "interval": self.interval, "span": self.span}
