@@ -25,6 +25,7 @@ class Timeline:
         self.entries: deque = deque(maxlen=int(round(span / interval)) + 1)
         self.cursor = None
         self.cleared = 0              # how many times an edit or reset cleared it (the status file shows it)
+        self.held = False             # the topology differs only by a tool's joint (a click's mouse drag)
         self._signature = None
 
     def __len__(self):
@@ -38,9 +39,12 @@ class Timeline:
         return (self.entries[0][0], self.entries[-1][0]) if self.entries else None
 
     def record(self, world):
-        """Called while playing, before and after a frame's steps.  If the world steps on from a
-        scrubbed moment, the snapshots after it go first; then a snapshot if ``interval`` has
-        passed since the newest one (half a step early, so float sums of dt do not skip one)."""
+        """Called while playing, before a frame's steps and after each step (so snapshots fall on
+        exact multiples of the interval's steps).  If the world steps on from a scrubbed moment,
+        the snapshots after it go first; then a snapshot if ``interval`` has passed since the
+        newest one (half a step early, so float sums of dt do not skip one)."""
+        if self.held:                 # stepping with the mouse drag's joint: the old snapshots no longer fit
+            self.clear()
         if self.cursor is not None:
             while len(self.entries) > self.cursor + 1:
                 self.entries.pop()
@@ -49,18 +53,25 @@ class Timeline:
         if not self.entries or t >= self.entries[-1][0] + self.interval - 0.5 * world.dt:
             self.entries.append((t, world.snapshot()))
 
-    def watch(self, world, signature):
+    def watch(self, world, signature, transient=False):
         """Clear the timeline if the world's topology changed.  ``signature`` is anything that
         changes with every edit (history version, counts of bodies and joints): only then are the
-        world's ids compared with the newest snapshot's.  Returns True if it cleared."""
+        world's ids compared with the newest snapshot's.  ``transient``: a tool's joint exists
+        (a click on a dynamic body holds a mouse joint until release), which is no edit: the
+        timeline is only held (no scrubbing) until the joint goes, or cleared if the world steps
+        with it.  Returns True if it cleared."""
         if signature == self._signature:
             return False
         self._signature = signature
+        self.held = False
         if not self.entries:
             return False
         try:
             check(world, self.entries[-1][1])
         except ValueError:
+            if transient:
+                self.held = True
+                return False
             self.clear()
             return True
         return False
@@ -68,7 +79,7 @@ class Timeline:
     def scrub(self, world, t):
         """Restore the newest snapshot taken at or before time ``t`` (the oldest if ``t`` is before
         it); returns its time, or None if there is none or the core refused (then cleared)."""
-        if not self.entries:
+        if not self.entries or self.held:
             return None
         k = 0
         for i, (ti, _) in enumerate(self.entries):
@@ -88,9 +99,10 @@ class Timeline:
             self.cleared += 1
         self.entries.clear()
         self.cursor = None
+        self.held = False
 
     def describe(self) -> dict:
         """For the status file: how many snapshots, their time range, the scrub cursor."""
         rng = self.range()
         return {"n": len(self.entries), "range": list(rng) if rng else None, "cursor": self.cursor,
-                "cleared": self.cleared, "interval": self.interval, "span": self.span}
+                "cleared": self.cleared, "held": self.held, "interval": self.interval, "span": self.span}

@@ -82,6 +82,7 @@ class Sandbox(pyglet.window.Window):
         self.warmup = Warmup(world, lock)
         self.sim = Simulation(self.editor, self.warmup, self.notices, paused=paused, lock=lock)
         self.timeline = Timeline()                # snapshots while playing: the timeline slider
+        self.sim.after_step = self._after_step
         self.sensors = SensorView()               # sensor fixtures, drawn translucent and lit
         self.autosaver = Autosaver(interval=autosave_interval)
         self.files = SceneFiles(self.editor, self.autosaver, lambda *a: self.panels.ask(*a))
@@ -166,8 +167,6 @@ class Sandbox(pyglet.window.Window):
             self.prepare_scene()
             self.keep_timeline()
             phys_ms, steps = self.sim.advance(real_dt, velocities=self.overlays.velocities)
-            if steps:
-                self.timeline.record(self.world)
             rd = self.check_bound() if steps else None
             self.sampler.sample(self.world, phys_ms, steps, self.frame_no, len(self.rd_ids))
             t_cmp = time.perf_counter()
@@ -212,10 +211,14 @@ class Sandbox(pyglet.window.Window):
         playing, a snapshot of the state before this frame's steps when one is due."""
         w = self.world
         sig = (self.editor.doc.history.version, len(self.rd_ids), len(w.joints), len(w.springs))
-        if self.timeline.watch(w, sig):
+        if self.timeline.watch(w, sig, transient=bool(self.editor.tool_joints)):
             self.notices.notify("timeline cleared: the bodies or joints changed")
         if self.sim.running:
             self.timeline.record(w)
+
+    def _after_step(self, world):
+        if self.sim.running:       # a single step (S) from a paused moment does not record
+            self.timeline.record(world)
 
     def preview_scene(self) -> float:
         """Before the kernels are ready: the scene as it stands (paused), framed, from numpy render

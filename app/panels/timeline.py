@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
-from .base import record
 from .style import DIM
 
 
@@ -31,11 +30,13 @@ def timeline_slider(app):
     rng = tl.range()
     app.ui_values["timeline"] = None
     if rng is None or rng[1] <= rng[0]:
-        imgui.text_colored(DIM, f"timeline: playing keeps the last {tl.span:.0f} s to scrub back through")
+        imgui.text_colored(DIM, f"timeline: play to record (last {tl.span:.0f} s)")
         return
     t = min(max(app.world.time, rng[0]), rng[1])
+    frame_w = imgui.calc_item_width()
     ch, v = imgui.slider_float("timeline", t, rng[0], rng[1], "%.2f s")
-    record(app, "sim:timeline")
+    a, b = imgui.get_item_rect_min(), imgui.get_item_rect_max()
+    app.ui_rects["sim:timeline"] = (a.x, a.y, a.x + frame_w, b.y)     # the slider's frame, not its label
     app.ui_values["timeline"] = t
     if imgui.is_item_hovered():
         imgui.set_tooltip(f"drag back through the last {rng[1] - rng[0]:.1f} s; Play continues from "
