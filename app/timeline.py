@@ -13,16 +13,33 @@ from physics.snapshot import check
 
 INTERVAL = 0.25     # s of simulated time between snapshots
 SPAN = 60.0         # s of simulated time kept
+BUDGET = 512 * 2**20    # bytes the ring may hold: a 1000-body ring of 60 s takes 255 MiB, 5000 bodies get ~24 s
+
+
+def nbytes(x) -> int:
+    """The array bytes in a snapshot (its tables, vertices, contacts: nearly all of it)."""
+    if hasattr(x, "nbytes"):
+        return int(x.nbytes)
+    if isinstance(x, dict):
+        return sum(nbytes(v) for v in x.values())
+    if isinstance(x, (list, tuple)):
+        return sum(nbytes(v) for v in x)
+    if hasattr(x, "__slots__"):
+        return sum(nbytes(getattr(x, k, None)) for k in x.__slots__)
+    return 0
 
 
 class Timeline:
     """Snapshots ``(time, snapshot)`` oldest first; ``cursor`` is the index restored by the last
-    scrub (None: the world is at or after the newest snapshot)."""
+    scrub (None: the world is at or after the newest snapshot).  At most ``span / interval + 1``
+    of them, fewer if that many would hold more than ``budget`` bytes (``capacity``)."""
 
-    def __init__(self, interval=INTERVAL, span=SPAN):
+    def __init__(self, interval=INTERVAL, span=SPAN, budget=BUDGET):
         self.interval = float(interval)
         self.span = float(span)
+        self.budget = budget
         self.entries: deque = deque(maxlen=int(round(span / interval)) + 1)
+        self.capacity = self.entries.maxlen
         self.cursor = None
         self.cleared = 0              # how many times an edit or reset cleared it (the status file shows it)
         self.held = False             # the topology differs only by a tool's joint (a click's mouse drag)
@@ -51,7 +68,12 @@ class Timeline:
             self.cursor = None
         t = world.time
         if not self.entries or t >= self.entries[-1][0] + self.interval - 0.5 * world.dt:
-            self.entries.append((t, world.snapshot()))
+            snap = world.snapshot()
+            if not self.entries:      # the scene's size sets how many fit the budget
+                self.capacity = max(2, min(self.entries.maxlen, self.budget // max(1, nbytes(snap))))
+            self.entries.append((t, snap))
+            while len(self.entries) > self.capacity:
+                self.entries.popleft()
 
     def watch(self, world, signature, transient=False):
         """Clear the timeline if the world's topology changed.  ``signature`` is anything that
@@ -105,4 +127,4 @@ class Timeline:
         """For the status file: how many snapshots, their time range, the scrub cursor."""
         rng = self.range()
         return {"n": len(self.entries), "range": list(rng) if rng else None, "cursor": self.cursor,
-                "cleared": self.cleared, "held": self.held, "interval": self.interval, "span": self.span}
+                "cleared": self.cleared, "held": self.held, "capacity": self.capacity, "interval": self.interval, "span": self.span}

@@ -25,6 +25,7 @@ def main(argv=None):
     from app.timeline import Timeline
     w = pile(args.bodies)
     tl = Timeline()
+    from app.timeline import nbytes
     cap = tl.entries.maxlen
     take, steps = [], []
     tracemalloc.start()
@@ -39,6 +40,7 @@ def main(argv=None):
     ring = tracemalloc.get_traced_memory()[0] - before
     tracemalloc.stop()
     pickled = len(pickle.dumps(tl.entries[-1][1]))
+    counted = nbytes(tl.entries[-1][1])      # what the ring's budget counts (app.timeline.BUDGET)
     scrub = []
     for k in range(0, cap, 10):
         t = time.perf_counter()
@@ -47,7 +49,7 @@ def main(argv=None):
     ms = lambda xs: 1e3 * statistics.median(xs)  # noqa: E731
     step_ms = ms(steps)
     print(f"{args.bodies} bodies: ring of {cap} snapshots = {ring / 2**20:.1f} MiB "
-          f"({ring / cap / 1024:.0f} KiB each; pickled {pickled / 1024:.0f} KiB)")
+          f"({ring / cap / 1024:.0f} KiB each; pickled {pickled / 1024:.0f} KiB; array bytes {counted / 1024:.0f} KiB)")
     print(f"snapshot {ms(take):.2f} ms (median; one per 15 steps at 60 Hz: {ms(take) / 15:.3f} ms a step, "
           f"{100 * ms(take) / 15 / step_ms:.1f} % of a {step_ms:.1f} ms step); scrub (restore) {ms(scrub):.2f} ms")
 

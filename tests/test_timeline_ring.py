@@ -47,3 +47,14 @@ def test_topology_edit_clears_tool_joint_holds():
     assert not tl.watch(w, 2) and not tl.held and tl.scrub(w, 0.0) == 0.0
     w.add_body(physics.Circle(0.2), position=(3, 3))
     assert tl.watch(w, 3) and len(tl) == 0 and tl.cleared == 1
+
+
+def test_byte_budget_limits_the_ring():
+    from app.timeline import nbytes
+    w = world()
+    size = nbytes(w.snapshot())
+    assert size > 1000                                     # the arrays are counted
+    tl = Timeline(interval=0.25, span=60.0, budget=3 * size + 1)
+    tl.record(w)
+    play(tl, w, 150)
+    assert tl.capacity == 3 and len(tl) == 3 and [round(t / w.dt) for t in tl.times()] == [120, 135, 150]
