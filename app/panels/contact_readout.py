@@ -10,6 +10,7 @@ from .base import record
 from .style import DIM
 
 MAX_LISTED = 6
+BUDGET_MS = 2.0      # world.contacts() is a Python loop (~23 ms for 1000 contacts): at most this a frame on average
 
 
 class ContactReadout:
@@ -18,10 +19,28 @@ class ContactReadout:
         self.app = app
         self.rate = HitRate()
         self.picked = None          # the fixture pair shown in full
+        self._cache = (None, [])     # ((body id, steps, edit version), its contacts)
+        self._skip = 0               # frames to wait before asking the core again (a big scene)
 
     def body(self):
         sel = [s for s in self.app.editor.selection if s.alive and isinstance(s, physics.Body)]
         return sel[-1] if sel else None
+
+    def contacts_of(self, b):
+        """``b``'s contacts from ``world.contacts()``, asked again only after a step or an edit,
+        and in a scene with many contacts only every few frames (BUDGET_MS a frame on average;
+        the hit rate then sees the begins at that coarser rate)."""
+        import time
+        w = self.app.world
+        key = (b.id, w.steps, self.app.editor.doc.history.version, id(w))
+        if key == self._cache[0] or (self._skip > 0 and self._cache[0] is not None and self._cache[0][0] == b.id):
+            self._skip -= 1
+            return self._cache[1]
+        t0 = time.perf_counter()
+        contacts = [c for c in w.contacts() if c.body_a.id == b.id or c.body_b.id == b.id]
+        self._skip = int((time.perf_counter() - t0) * 1e3 / BUDGET_MS)
+        self._cache = (key, contacts)
+        return contacts
 
     def draw(self):
         """One line per contact of the selected body (click one to pick it), the picked one's
@@ -31,7 +50,7 @@ class ContactReadout:
         app.ui_values["contacts"] = None
         if b is None:
             return
-        contacts = [c for c in app.world.contacts() if c.body_a.id == b.id or c.body_b.id == b.id]
+        contacts = self.contacts_of(b)
         self.rate.update(app.world, b.id, contacts)
         keys = [pair_key(c) for c in contacts]
         if self.picked not in keys:

@@ -24,13 +24,12 @@ class SimulationSection(Section):
         if imgui.button("Reset (R)"):
             app.files.request_reset()
         w = app.world
-        imgui.text_colored(DIM, f"t = {w.time:.2f} s   steps {w.steps}   bodies {len(app.rd_ids)}")
+        timeline_slider(app, f"steps {w.steps}   bodies {len(app.rd_ids)}")
         ch, v = imgui.slider_float("time scale", sim.time_scale, 0.05, 4.0, "%.2fx",
                                    imgui.SliderFlags_.logarithmic.value)
         if ch:
             sim.time_scale = v
         self.speed(sim)
-        timeline_slider(app)
         ch, hz = imgui.input_float("step rate (Hz)", 1.0 / w.dt, 10.0, 60.0, "%.1f", ENTER)
         record(app, "sim:step_rate")
         if ch:

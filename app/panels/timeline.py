@@ -24,22 +24,27 @@ def scrub(app, t):
     app.recorder.clear(keep_series=True)
 
 
-def timeline_slider(app):
-    """The slider over the snapshots' time range (or a line saying how to get one)."""
+def timeline_slider(app, info: str):
+    """The time line of the Simulation section: ``t = ...`` as a slider over the snapshots' time
+    range (while there are any) followed by ``info``; plain text before the first play, so the
+    section keeps its height (the panels below stay where they were)."""
     tl = app.timeline
     rng = tl.range()
     app.ui_values["timeline"] = None
     if rng is None or rng[1] <= rng[0]:
-        imgui.text_colored(DIM, f"timeline: play to record (last {tl.span:.0f} s)")
+        imgui.text_colored(DIM, f"t = {app.world.time:.2f} s   {info}")
         return
     t = min(max(app.world.time, rng[0]), rng[1])
-    frame_w = imgui.calc_item_width()
-    ch, v = imgui.slider_float("timeline", t, rng[0], rng[1], "%.2f s")
+    imgui.set_next_item_width(150)
+    ch, v = imgui.slider_float("##timeline", t, rng[0], rng[1], "t = %.2f s")
     a, b = imgui.get_item_rect_min(), imgui.get_item_rect_max()
-    app.ui_rects["sim:timeline"] = (a.x, a.y, a.x + frame_w, b.y)     # the slider's frame, not its label
+    app.ui_rects["sim:timeline"] = (a.x, a.y, b.x, b.y)
     app.ui_values["timeline"] = t
     if imgui.is_item_hovered():
-        imgui.set_tooltip(f"drag back through the last {rng[1] - rng[0]:.1f} s; Play continues from "
-                          "the moment shown (what came after it is dropped)")
+        imgui.set_tooltip(f"timeline: drag back through the last {rng[1] - rng[0]:.1f} s (up to "
+                          f"{tl.span:.0f} s are kept while playing); Play continues from the moment "
+                          "shown (what came after it is dropped)")
     if ch:
         scrub(app, v)
+    imgui.same_line()
+    imgui.text_colored(DIM, info)
