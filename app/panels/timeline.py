@@ -34,16 +34,16 @@ def timeline_slider(app, info: str):
     if rng is None or rng[1] <= rng[0]:
         imgui.text_colored(DIM, f"t = {app.world.time:.2f} s   {info}")
         return
-    t = min(max(app.world.time, rng[0]), rng[1])
+    hi = max(rng[1], app.world.time)        # the grab shows the world's time, past the newest snapshot too
+    t = min(max(app.world.time, rng[0]), hi)
     imgui.set_next_item_width(150)
-    ch, v = imgui.slider_float("##timeline", t, rng[0], rng[1], "t = %.2f s")
+    ch, v = imgui.slider_float("##timeline", t, rng[0], hi, "t = %.2f s")
     a, b = imgui.get_item_rect_min(), imgui.get_item_rect_max()
     app.ui_rects["sim:timeline"] = (a.x, a.y, b.x, b.y)
     app.ui_values["timeline"] = t
     if imgui.is_item_hovered():
-        imgui.set_tooltip(f"timeline: drag back through the last {rng[1] - rng[0]:.1f} s (up to "
-                          f"{tl.span:.0f} s are kept while playing); Play continues from the moment "
-                          "shown (what came after it is dropped)")
+        imgui.set_tooltip(f"timeline: drag back through the last {rng[1] - rng[0]:.1f} s (up to {tl.span:.0f} s)\n"
+                          "Play continues from the moment shown")
     if ch:
         scrub(app, v)
     imgui.same_line()

@@ -69,6 +69,7 @@ def test_timeline_scrub_back_and_play_on(launch, tmp_path):
     shown_steps = st["steps"]
     same_state(st, Headless(path).at(shown_steps))       # the recorded state at that time, bit for bit
     c_then = body(st, "c")["position"]
+    app.screenshot("scrubbed")
     # play on: the world continues from there (the later snapshots are dropped)
     app.xdo("mousemove", 700, 150)
     app.settle()
