@@ -102,6 +102,7 @@ def status(app) -> dict:
         "trail_seconds": ed.tracers.seconds, "snap": {"on": ed.snap.on, "grid": ed.snap.grid, "angle": ed.snap.angle},
         "follow": ed.follow.obj.id if ed.follow is not None and ed.follow.obj is not None else None,
         "clipboard": len(ed.clipboard["bodies"]) if ed.clipboard else 0, "context_menu": app.panels.context.shown,
+"lasers": ed.lasers.describe(), "timeline": app.timeline.describe(),
         "compare_plots": [p.last for p in app.panels.stats.compare.plots] if app.compare.active else [],
     }
 

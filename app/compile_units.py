@@ -69,6 +69,8 @@ def _frame():
     p.sleep(w, w.dt)
     w.contacts()
     w.query_point((0.0, 0.5))
+    w.ray_cast((-5.0, 0.5), (5.0, 0.5), first=True)     # the laser tool's beams
+    w.ray_cast((-5.0, 0.5), (5.0, 0.5))
 
 
 def _extras():

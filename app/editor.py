@@ -11,6 +11,7 @@ import physics
 from .clipboard import Paste, copy_bodies, paste_offset, selected_bodies
 from .commands import Group, RemoveBodies, RemoveJoint, RemoveSpring, SetProperty, SetWorld
 from .document import Document
+from .lasers import Lasers
 from .picking import joint_near
 from .render.decor import Decor
 from .snapping import Snap
@@ -53,6 +54,7 @@ class Editor:
         self.clipboard = None                  # what Ctrl+C copied (app.clipboard.copy_bodies)
         self.follow = None                     # Ref of the body the camera follows (L), or None
         self.tracers = Tracers()               # trails behind points of bodies (tracer tool, context menu)
+        self.lasers = Lasers()                 # the laser tool's emitters and their beams
         self.tools = {cls.name: cls(self) for cls in TOOLS}
         self.tool_names = [cls.name for cls in TOOLS]
         self.tool = self.tools["select"]
@@ -102,6 +104,7 @@ class Editor:
         self.doc = Document(world, path)
         self.colors = {self.doc.refs.of(world.bodies[k]): c for k, c in places.items() if k < len(world.bodies)}
         self.tracers.reset(world, self.doc.refs, keep=keep_camera)   # a reset clears the trails
+        self.lasers.reset(world, self.doc.refs, keep=keep_camera)    # a reset keeps the lasers
         for cb in self.on_document:
             cb(world, path, keep_camera)
 
@@ -355,5 +358,6 @@ class Editor:
         d.hidden_springs |= self.tool_springs
         d.hidden_joints |= self.tool_joints
         d.motor_pins = motor_pins(self.world)
+        self.lasers.decorate(d, self.tools["laser"].selected)
         self.tool.decorate(d, tuple(self.cursor))
         return d

@@ -31,6 +31,7 @@ class Simulation:
         self.compiling_note = ""
         self.quadtree = np.zeros((0, 4))       # the last quadtree cells drawn (overlay Q)
         self.velocities = None                 # (N, 2) body velocities for the arrows (overlay V)
+        self.after_step = None                 # called with the world after each step (the timeline)
         self._vel_key = None
 
     def reset(self):
@@ -70,6 +71,8 @@ class Simulation:
             for _ in range(n):
                 self.editor.tool.update(self.editor.cursor)
                 w.step()
+                if self.after_step is not None:
+                    self.after_step(w)
         except physics.SimulationError as exc:
             self.fault = str(exc)
             self.running = False

@@ -30,8 +30,10 @@ from .preview import PreviewWorld
 from .preview import render_data as preview_render_data
 from .render import Overlays, Renderer
 from .scenes import initial_world
+from .sensors import SensorView
 from .simulation import Simulation
 from .stats import FrameTimes, StatsSampler
+from .timeline import Timeline
 from .warmup import Warmup
 
 PROFILE = bool(os.environ.get("STELKROPP_PROFILE"))
@@ -79,6 +81,9 @@ class Sandbox(pyglet.window.Window):
         lock = threading.Lock()
         self.warmup = Warmup(world, lock)
         self.sim = Simulation(self.editor, self.warmup, self.notices, paused=paused, lock=lock)
+        self.timeline = Timeline()                # snapshots while playing: the timeline slider
+        self.sim.after_step = self._after_step
+        self.sensors = SensorView()               # sensor fixtures, drawn translucent and lit
         self.autosaver = Autosaver(interval=autosave_interval)
         self.files = SceneFiles(self.editor, self.autosaver, lambda *a: self.panels.ask(*a))
         self.files.errors = errors
@@ -111,6 +116,7 @@ class Sandbox(pyglet.window.Window):
 
     def _document_changed(self, world, path, keep_camera):
         self.sim.reset()
+        self.timeline.clear()                     # a reset or another scene: nothing to go back to
         self.sampler.clear()
         self.recorder.clear(keep_series=keep_camera)     # a reset keeps what is plotted
         if keep_camera:
@@ -159,6 +165,7 @@ class Sandbox(pyglet.window.Window):
         phys_ms = upload_ms = 0.0
         if ready:
             self.prepare_scene()
+            self.keep_timeline()
             phys_ms, steps = self.sim.advance(real_dt, velocities=self.overlays.velocities)
             rd = self.check_bound() if steps else None
             self.sampler.sample(self.world, phys_ms, steps, self.frame_no, len(self.rd_ids))
@@ -166,6 +173,7 @@ class Sandbox(pyglet.window.Window):
             self.compare.update(phys_ms, steps)
             self.recorder.sample(self.world)
             self.editor.tracers.sample(self.world)
+            self.editor.lasers.update(self.world)
             phys_ms += (time.perf_counter() - t_cmp) * 1e3
             self.follow_camera()
             self.input.update_hover()
@@ -197,6 +205,20 @@ class Sandbox(pyglet.window.Window):
         if self.frame_no == 1:
             self.warmup.frame_drawn()      # the second frame began after the first one's swap
         self.frame_no += 1
+
+    def keep_timeline(self):
+        """Clear the timeline if an edit (or the mouse drag's joint) changed the topology; while
+        playing, a snapshot of the state before this frame's steps when one is due."""
+        w = self.world
+        sig = (self.editor.doc.history.version, len(self.rd_ids), len(w.joints), len(w.springs))
+        if self.timeline.watch(w, sig, transient=bool(self.editor.tool_joints)):
+            self.notices.notify("timeline cleared: the bodies or joints changed")
+        if self.sim.running:
+            self.timeline.record(w)
+
+    def _after_step(self, world):
+        if self.sim.running:       # a single step (S) from a paused moment does not record
+            self.timeline.record(world)
 
     def preview_scene(self) -> float:
         """Before the kernels are ready: the scene as it stands (paused), framed, from numpy render
@@ -258,6 +280,9 @@ class Sandbox(pyglet.window.Window):
         self.rd_ids = rd.ids
         decor = self.editor.decor()
         decor.trails = self.editor.tracers.segments()
+        if sim_overlays:       # lit sensors need the overlap query's kernels (compiled by the warmup)
+            decor.sensors = self.sensors.states(self.world, (self.editor.doc.history.version, len(rd.ids),
+                                                             id(self.world)))
         if self.bound.shown:
             for a, b in self.bound.outline():
                 decor.segments.append((a, b, 1.5, BOUND_COLOR))

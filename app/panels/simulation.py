@@ -5,6 +5,7 @@ from imgui_bundle import imgui
 
 from .base import Section, record, wrapped
 from .style import AMBER, DIM, ENTER, RED
+from .timeline import timeline_slider
 
 
 class SimulationSection(Section):
@@ -23,7 +24,7 @@ class SimulationSection(Section):
         if imgui.button("Reset (R)"):
             app.files.request_reset()
         w = app.world
-        imgui.text_colored(DIM, f"t = {w.time:.2f} s   steps {w.steps}   bodies {len(app.rd_ids)}")
+        timeline_slider(app, f"steps {w.steps}   bodies {len(app.rd_ids)}")
         ch, v = imgui.slider_float("time scale", sim.time_scale, 0.05, 4.0, "%.2fx",
                                    imgui.SliderFlags_.logarithmic.value)
         if ch:

@@ -6,6 +6,7 @@ from imgui_bundle import imgui
 
 from .base import record, record_window
 from .compare_plots import ComparePlots
+from .contact_readout import ContactReadout
 from .plot import TimePlot, grid
 from .style import DIM, PANEL_W, STATS_H
 
@@ -29,6 +30,7 @@ class StatsWindow:
         self.app = app
         self.plots = [TimePlot(title, unit) for title, unit, _ in self.SERIES]
         self.compare = ComparePlots(app)
+        self.contacts = ContactReadout(app)   # the selected body's contacts: impulses, hits per second
         self.show_compare = False      # the next frame selects the Compare tab (set on start)
         self.show_plot = False         # the next frame selects the Plot tab (a first series chosen)
         self.tab = "Stats"             # the tab drawn last
@@ -81,6 +83,7 @@ class StatsWindow:
                                 f"draw {ft['draw']:.2f}  ui {ft['ui']:.2f} ms   "
                                 f"bodies {info.get('bodies', 0)}  awake {info.get('awake', 0)}  "
                                 f"springs {info.get('springs', 0)}  pairs {info.get('contacts', 0)}")
+        self.contacts.draw()
         s = app.sampler.stats
         t, n = s.arrays()
         if n < 2:

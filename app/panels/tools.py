@@ -17,7 +17,7 @@ class ToolsSection(Section):
 
     def draw(self):
         ed = self.app.editor
-        per_row = 5           # sixteen tools in four rows: the inspector below stays on screen
+        per_row = 5           # seventeen tools in four rows: the inspector below stays on screen
         gap = imgui.get_style().item_spacing.x
         width = (imgui.get_content_region_avail().x - (per_row - 1) * gap) / per_row
         for i, name in enumerate(ed.tool_names):

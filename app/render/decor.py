@@ -28,4 +28,5 @@ class Decor:
     segments: list = field(default_factory=list)        # (p0, p1, width_px, rgba)
     points: list = field(default_factory=list)          # (p, radius_px, rgba)
     colors: dict = field(default_factory=dict)          # body id -> (r, g, b) chosen in the inspector
+    sensors: dict = field(default_factory=dict)         # sensor fixture id -> lit (app.sensors)
     trails: tuple | None = None                         # (p0 (K, 2), p1 (K, 2), rgba (K, 4)) tracer trails

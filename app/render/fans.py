@@ -29,11 +29,12 @@ class Fans:
             self._key = key
         return self._edge_body, self._ia, self._ib
 
-    def build(self, rd, fill, line, parts=None):
+    def build(self, rd, fill, line, parts=None, part_colors=None):
         """Polygons as a fan of (centre, v_i, v_i+1) per edge; the centre vertex carries its
         distance to the edge so the shader can draw the outline.  ``fill``/``line``: (N, 4) per
         body.  ``parts`` (app.render.parts.Parts): draw each fixture by itself (a compound body's
-        pieces, rounded outlines); without it, one polygon per body as in render data."""
+        pieces, rounded outlines); without it, one polygon per body as in render data.
+        ``part_colors``: (fill, line) per part of ``parts`` instead of per body (sensors)."""
         if parts is None:
             V, vstart, vcount, centre, owner = rd.vertices, rd.vstart, rd.vcount, rd.center, None
         else:
@@ -42,7 +43,9 @@ class Fans:
         if not len(eb):
             return np.zeros((0, 11), F32)
         c, a, b = centre[eb], V[ia], V[ib]
-        if owner is not None:
+        if part_colors is not None:
+            fill, line = part_colors
+        elif owner is not None:
             eb = owner[eb]
         e = b - a
         el = np.hypot(e[:, 0], e[:, 1])

@@ -21,8 +21,8 @@ ARC = 8        # points per rounded corner: 8 keeps a 1 px chord error up to ~50
 
 
 class Parts:
-    """The fixtures of one render data: ``polys`` (vertices, vstart, vcount, centre, body row),
-    ``circles`` (centre, radius, body row), ``lines`` (p0, p1, body row)."""
+    """The fixtures of one render data: ``polys`` (vertices, vstart, vcount, centre, body row,
+    fixture id), ``circles`` (centre, radius, body row, fixture id), ``lines`` (p0, p1, body row)."""
 
     def __init__(self, rd):
         fx = rd.fixtures
@@ -39,9 +39,11 @@ class Parts:
         self.vstart = np.concatenate([fx["vstart"][sharp].astype(np.int64), rstart + base])
         self.vcount = np.concatenate([vcount[sharp], rcount])
         self.body = np.concatenate([body[sharp], body[round_]])
+        self.fixture = np.concatenate([fx["id"][sharp], fx["id"][round_]]).astype(np.int64)
         self.centre = _means(self.vertices, self.vstart, self.vcount)
         ci = np.nonzero(shape == CIRCLE)[0]
         self.circle_centre, self.circle_radius, self.circle_body = fx["center"][ci], radius[ci], body[ci]
+        self.circle_fixture = fx["id"][ci].astype(np.int64)
         li = np.nonzero(((shape == SEGMENT) | (shape == CHAIN_SEGMENT)) & (vcount >= 2))[0]
         s = fx["vstart"][li].astype(np.int64)
         self.line_p0, self.line_p1, self.line_body = V[s], V[s + 1], body[li]

@@ -22,6 +22,7 @@ from .geometry import arrows, coils, discs, grid_lines, rects, thick_segments
 from .gl import Layer, load_program
 from .joints import joint_lines, joint_markers
 from .parts import Parts
+from .sensors import sensor_colors
 
 F32 = np.float32
 
@@ -89,8 +90,9 @@ class Renderer:
         t0 = time.perf_counter()
         fill, line = self.body_colors(rd, decor)
         parts = Parts(rd) if getattr(rd, "fixtures", None) is not None else None
-        self.polys.upload(self.fans.build(rd, fill, line, parts))
-        self.circles.upload(self.circle_layer(rd, parts, fill, line))
+        sc = sensor_colors(parts, fill, line, decor.sensors) if parts is not None and decor.sensors else None
+        self.polys.upload(self.fans.build(rd, fill, line, parts, sc and sc[0]))
+        self.circles.upload(self.circle_layer(rd, parts, fill, line, sc and sc[1]))
         shape_lines = self.shape_lines(parts, line, camera.scale)
         self.lines.upload(np.concatenate([shape_lines, self.line_layer(rd, camera.scale, overlays, decor, spring_ids,
                                                                        quadtree, velocities)]))
@@ -103,13 +105,15 @@ class Renderer:
         return self.fans.build(rd, fill, line, parts)
 
     @staticmethod
-    def circle_layer(rd, parts, fill, line):
-        """Circle fixtures as discs at their own centres, turning with their body (the spoke)."""
+    def circle_layer(rd, parts, fill, line, part_colors=None):
+        """Circle fixtures as discs at their own centres, turning with their body (the spoke);
+        ``part_colors``: (fill, line) per circle fixture instead of per body (sensors)."""
         if parts is None:
             ci = np.nonzero(rd.vcount == 0)[0]
             return discs(rd.center[ci], rd.radius[ci], rd.angle[ci], 1.0, fill[ci], line[ci])
         b = parts.circle_body
-        return discs(parts.circle_centre, parts.circle_radius, rd.angle[b], 1.0, fill[b], line[b])
+        f, ln = part_colors if part_colors is not None else (fill[b], line[b])
+        return discs(parts.circle_centre, parts.circle_radius, rd.angle[b], 1.0, f, ln)
 
     @staticmethod
     def shape_lines(parts, line, scale):

@@ -8,6 +8,7 @@ from .circle import CircleTool
 from .fixate import FixateTool
 from .ground import GroundTool
 from .hinge import HingeTool
+from .laser import LaserTool
 from .motor import MotorTool
 from .ngon import NgonTool
 from .polygon import PolygonTool
@@ -20,6 +21,7 @@ from .tracer import TracerTool
 from .wheel import WheelTool
 
 TOOLS = (SelectTool, BoxTool, PolygonTool, NgonTool, CircleTool, SpringTool, TracerTool, HingeTool, MotorTool,
-         FixateTool, SliderTool, RopeTool, WheelTool, SketchTool, CapsuleTool, GroundTool)
+         FixateTool, SliderTool, RopeTool, WheelTool, SketchTool, CapsuleTool, GroundTool,
+         LaserTool)
 
 __all__ = ["TOOLS", "Tool", "ToolOptions", "body_args"]
