@@ -10,13 +10,15 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
 
 import numpy as np
 
+from .records import Records
 from .runs import Run
 
-_ARRAYS = ("positions", "angles", "kinetic", "potential", "speeds", "sizes")
+_ARRAYS = ("positions", "angles", "kinetic", "potential", "speeds", "sizes", "links")
+# 2: runs carry their constraint lengths (links, pins); a version-1 file is refused, not misread
+VERSION = 2
 
 
 def scene_hash(scene: dict) -> str:
@@ -24,53 +26,19 @@ def scene_hash(scene: dict) -> str:
     return hashlib.sha1(json.dumps(scene, sort_keys=True).encode()).hexdigest()[:16]
 
 
-class Journal:
-    """Finished runs of one sweep in a JSON-lines file at ``path``: ``done`` (key -> Run) after
-    opening; ``add`` appends one.  ValueError naming ``results`` if ``resume`` finds a file made for
-    another scene, step count or stride; OSError if it cannot be written."""
+def Journal(path, scene: dict, steps: int, stride: int, resume: bool) -> Records:
+    """The tuner's runs of one sweep in a JSON-lines file at ``path`` (records.Records: ``done``,
+    ``add(key, run)``).  ValueError naming ``results`` if ``resume`` finds a file made for another
+    scene, step count or stride; OSError if it cannot be written."""
+    header = {"stelkropp_tune": VERSION, "scene": scene_hash(scene), "steps": steps, "stride": stride}
+    return Records(path, header, resume, encode=_rec, decode=_run)
 
-    def __init__(self, path, scene: dict, steps: int, stride: int, resume: bool):
-        self.path = os.fspath(path)
-        self.header = {"stelkropp_tune": 1, "scene": scene_hash(scene), "steps": steps, "stride": stride}
-        self.done: dict[str, Run] = {}
-        if resume and os.path.exists(self.path):
-            self._read()
-            self._file = open(self.path, "a", encoding="utf-8")
-        else:
-            self._file = open(self.path, "w", encoding="utf-8")
-            self._write(self.header)
 
-    def _read(self) -> None:
-        with open(self.path, encoding="utf-8") as f:
-            lines = f.read().split("\n")
-        try:
-            head = json.loads(lines[0])
-        except (ValueError, IndexError):
-            head = None
-        if head != self.header:
-            raise ValueError(f"results: {self.path} was written for another scene, step count or sample "
-                             "stride; remove it or run without --resume")
-        for line in lines[1:]:
-            try:
-                rec = json.loads(line)
-            except ValueError:  # the last line of a killed run may be cut short
-                continue
-            self.done[rec["key"]] = _run(rec)
-
-    def add(self, run: Run) -> None:
-        """Append a finished run and flush it to the file."""
-        self.done[run.key] = run
-        rec = {k: getattr(run, k) for k in ("key", "depth", "seconds", "steps", "error")}
-        rec.update({k: getattr(run, k).tolist() for k in _ARRAYS})
-        self._write(rec)
-
-    def _write(self, rec: dict) -> None:
-        self._file.write(json.dumps(rec) + "\n")
-        self._file.flush()
-
-    def close(self) -> None:
-        """Close the file (what was added is already on disk)."""
-        self._file.close()
+def _rec(run: Run) -> dict:
+    rec = {k: getattr(run, k) for k in ("key", "depth", "seconds", "steps", "error")}
+    rec.update({k: getattr(run, k).tolist() for k in _ARRAYS})
+    rec["pins"] = run.pins.tolist()
+    return rec
 
 
 def _run(rec: dict) -> Run:
@@ -79,5 +47,9 @@ def _run(rec: dict) -> Run:
     arrays["positions"] = arrays["positions"].reshape(-1, n, 2)
     arrays["angles"] = arrays["angles"].reshape(-1, n)
     arrays["speeds"] = arrays["speeds"].reshape(-1, n)
+    pins = np.asarray(rec["pins"], dtype=bool)
+    k = len(arrays["kinetic"])  # (reshape(-1, 0) is ambiguous: a scene without constraints)
+    arrays["links"] = arrays["links"].reshape(k, len(pins))
     return Run(rec["key"], arrays["positions"], arrays["angles"], arrays["kinetic"], arrays["potential"],
-               arrays["speeds"], rec["depth"], rec["seconds"], rec["steps"], rec["error"], arrays["sizes"])
+               arrays["speeds"], rec["depth"], rec["seconds"], rec["steps"], rec["error"], arrays["sizes"],
+               arrays["links"], pins)

@@ -4,6 +4,8 @@
     final_state   RMS over the dynamic bodies of the pose error at the last sample (m)
     energy_drift  largest |E(t) - E_ref(t)| over the run, as a fraction of the energy scale
     penetration   deepest contact at any sample (m): needs no reference
+    constraint    largest |L(t) - L_ref(t)| over the samples and the scene's springs and joints (m),
+                  L a spring's length or a joint's anchor gap (for a pin joint, its position error)
 
 The pose error of a body is sqrt(|x - x_ref|^2 + (r * dtheta)^2) with r the body's radius about
 its centre, so a turned body counts by how far its outline moved (issue 19: "angles scaled by
@@ -21,7 +23,8 @@ import math
 import numpy as np
 
 #: metric -> unit of its budget
-METRICS = {"trajectory": "m", "final_state": "m", "energy_drift": "of the energy scale", "penetration": "m"}
+METRICS = {"trajectory": "m", "final_state": "m", "energy_drift": "of the energy scale", "penetration": "m",
+           "constraint": "m"}
 # statistical fallback: a candidate whose energy grows by more than this fraction of the scale
 # without input fails whatever its other numbers (a seed-mode spring or penalty explosion)
 ENERGY_GAIN_LIMIT = 0.05
@@ -73,17 +76,37 @@ def compare(run, ref, metric: str) -> dict:
     if k < len(ref.kinetic):
         drift = math.inf
     out = {"rms": float(np.sqrt(np.mean(e ** 2))) if n else 0.0, "max": float(np.max(e)) if n else 0.0,
-           "final": float(np.sqrt(np.mean(e[-1] ** 2))) if n else 0.0, "drift": drift, "depth": run.depth}
+           "final": float(np.sqrt(np.mean(e[-1] ** 2))) if n else 0.0, "drift": drift, "depth": run.depth,
+           "constraint": constraint_error(run, ref)}
     out["error"] = {"trajectory": out["rms"], "final_state": out["final"], "energy_drift": drift,
-                    "penetration": run.depth}[metric]
+                    "penetration": run.depth, "constraint": out["constraint"]}[metric]
     return out
+
+
+def constraint_error(run, ref) -> float:
+    """Largest |L - L_ref| (m) over the samples and the springs' lengths and joints' anchor gaps
+    (runs.links); inf if the run stopped early; 0 for a scene without springs or joints."""
+    if ref.links.shape[1] == 0:
+        return 0.0
+    if len(run.links) < len(ref.links):
+        return math.inf
+    return float(np.max(np.abs(run.links - ref.links)))
+
+
+def pin_gap(run) -> float:
+    """Largest anchor gap (m) of the run's pin joints (revolute, weld): their error by their own
+    definition, which needs no reference (0 without pin joints)."""
+    if not np.any(run.pins):
+        return 0.0
+    return float(np.max(run.links[:, run.pins]))
 
 
 def statistical(run, ref, metric: str) -> dict:
     """The fallback when the reference has not converged: energy gain (fraction of the scale),
     penetration (m) and resting drift (m).  ``error`` for trajectory and final_state is the larger
     of penetration and resting drift (m), inf if the energy gain exceeds ENERGY_GAIN_LIMIT; for
-    energy_drift it is the run's own largest |E(t) - E(0)| over the scale."""
+    energy_drift it is the run's own largest |E(t) - E(0)| over the scale; for constraint the pin
+    joints' largest anchor gap (m, inf if the energy gain exceeds ENERGY_GAIN_LIMIT)."""
     scale = energy_scale(ref)
     e = run.energy
     gain = float(np.max(e - e[0])) / scale if len(e) else math.inf
@@ -91,11 +114,13 @@ def statistical(run, ref, metric: str) -> dict:
     rest = resting_drift(run)
     if run.error is not None:
         gain = own = math.inf
-    out = {"gain": gain, "drift": own, "depth": run.depth, "rest": rest}
+    out = {"gain": gain, "drift": own, "depth": run.depth, "rest": rest, "pin_gap": pin_gap(run)}
     if metric == "energy_drift":
         out["error"] = own
     elif metric == "penetration":
         out["error"] = run.depth
+    elif metric == "constraint":  # springs have no length to hold without a reference: pins only
+        out["error"] = out["pin_gap"] if gain <= ENERGY_GAIN_LIMIT and run.error is None else math.inf
     else:
         out["error"] = max(run.depth, rest) if gain <= ENERGY_GAIN_LIMIT else math.inf
     return out

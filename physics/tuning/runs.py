@@ -57,7 +57,9 @@ def _word(v) -> str:
 class Run:
     """What one run recorded: positions (K, n, 2, m) and angles (K, n, rad) of the dynamic bodies
     at the K sample times, kinetic and potential energy (K, J), speeds (K, n, m/s), the deepest contact seen at a sample (m), the
-    seconds spent in ``world.step`` (sampling excluded), and the error if a step was refused."""
+    seconds spent in ``world.step`` (sampling excluded), and the error if a step was refused.
+    ``links`` (K, m, m): each spring's length, then each joint's anchor gap |anchor_a - anchor_b|,
+    at each sample; ``pins`` (m,): which of them should be 0 (revolute and weld joints)."""
 
     key: str
     positions: np.ndarray
@@ -70,6 +72,8 @@ class Run:
     steps: int
     error: str | None = None
     sizes: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    links: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
+    pins: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
 
     @property
     def energy(self) -> np.ndarray:
@@ -89,6 +93,24 @@ def body_sizes(world) -> np.ndarray:
         else:
             out.append(float(s.radius + np.hypot(*s.offset)))
     return np.asarray(out)
+
+
+#: joint kinds whose two anchors coincide when the joint holds (their gap is the position error)
+PIN_KINDS = ("revolute", "weld")
+
+
+def pin_mask(world) -> np.ndarray:
+    """Which of ``links``' entries (springs first, then joints) should be 0: the pin joints."""
+    return np.array([False] * len(world.springs) + [j.kind in PIN_KINDS for j in world.joints], dtype=bool)
+
+
+def links(world) -> list[float]:
+    """Each spring's length, then each joint's anchor gap (m): the constraint state sampled."""
+    out = [s.length for s in world.springs]
+    for j in world.joints:
+        (ax, ay), (bx, by) = j.anchor_a, j.anchor_b
+        out.append(math.hypot(ax - bx, ay - by))
+    return out
 
 
 def build(scene: dict, cand: Candidate):
@@ -133,9 +155,11 @@ def run_case(scene: dict, cand: Candidate, steps: int, stride: int) -> Run:
             break
         seconds += time.perf_counter() - t0
         samples.append(_sample(world, dyn))
-    x, a, ke, pe, v, d = (np.array(col, dtype=np.float64) for col in zip(*samples))
-    return Run(cand.key, x.reshape(len(samples), len(dyn), 2), a.reshape(len(samples), len(dyn)), ke, pe,
-               v.reshape(len(samples), len(dyn)), float(np.max(d)), seconds, done, error, body_sizes(world))
+    x, a, ke, pe, v, d, ln = (np.array(col, dtype=np.float64) for col in zip(*samples))
+    k = len(samples)
+    return Run(cand.key, x.reshape(k, len(dyn), 2), a.reshape(k, len(dyn)), ke, pe, v.reshape(k, len(dyn)),
+               float(np.max(d)), seconds, done, error, body_sizes(world), ln.reshape(k, -1) if ln.size else
+               np.zeros((k, 0)), pin_mask(world))
 
 
 def _sample(world, dyn):
@@ -144,7 +168,7 @@ def _sample(world, dyn):
     v = [math.hypot(*b.velocity) for b in dyn]
     depth = max((c.depth for c in world.contacts()), default=0.0)  # negative: within the slop, apart
     depth = max(depth, 0.0)
-    return x, a, world.kinetic_energy(), world.potential_energy(), v, depth
+    return x, a, world.kinetic_energy(), world.potential_energy(), v, depth, links(world)
 
 
 def task(cand: Candidate, scene: dict, steps: int, stride: int) -> Run:

@@ -102,11 +102,14 @@ def tune(source, steps: int = 600, metric: str = "trajectory", budget: float = 0
     modes to search (default all; the scene as it is always runs, as the speed baseline, and is
     chosen only if its mode is among them).  ``results``: a file that receives each finished run as
     it arrives (journal.py); with ``resume`` the runs already in it are not run again.
-    ValueError names a bad steps, metric, budget, modes, scheduler or results file; SceneError
-    for a bad scene."""
+    ValueError names a bad steps, metric (``constraint`` on a scene without springs or joints),
+    budget, modes, scheduler or results file; SceneError for a bad scene."""
     metric, budget, steps = check_metric(metric), check_budget(budget), check_steps(steps)
     modes = _check_modes(modes)
     data, _ = scene_data(source)
+    if metric == "constraint" and not (data.get("springs") or data.get("joints")):
+        raise ValueError("metric: 'constraint' measures springs and joints, and this scene has none; "
+                         "choose another metric")
     stride = stride_for(steps)
     steps = max(stride, steps // stride * stride)
     journal = Journal(results, data, steps, stride, resume) if results is not None else None
@@ -168,4 +171,4 @@ def _note(converged, gap, metric, budget, ref, fine) -> str:
                 f"(budget {budget:g}); candidates scored against it by {metric}")
     return (f"chaotic or unconverged: the reference and a run twice as fine differ by {gap:.3g}, more "
             f"than half the budget ({budget:g}), so no trajectory is trustworthy; scored instead by "
-            "statistical measures (energy gain, penetration, resting drift)")
+            "statistical measures (energy gain, penetration, resting drift, pin joints' gaps)")

@@ -1,7 +1,8 @@
-"""Running the tuner's cases as dask.distributed tasks, with a progress bar.
+"""Running independent cases as dask.distributed tasks, with a progress bar: the one Dask
+plumbing of ``tune``, ``bench`` and ``bench.reliability`` (issue 19).
 
-``scheduler=None`` starts a LocalCluster on this machine (2 worker processes of
-one thread each); an address (``tcp://host:8786``) uses that cluster;
+``scheduler=None`` starts a LocalCluster on this machine (a worker process of
+one thread per core); an address (``tcp://host:8786``) uses that cluster;
 ``"inline"`` runs the cases one after another in this process (no Dask: for
 the Python API inside a process that must not spawn workers).  Each worker
 runs one case at a time on one thread, so a case's timing never shares its
@@ -11,9 +12,11 @@ table's seconds are for ranking, not a benchmark.
 """
 from __future__ import annotations
 
+import os
 import sys
 
-LOCAL_WORKERS = 2
+#: worker processes of a local cluster: one per core (each with one thread)
+LOCAL_WORKERS = max(1, os.cpu_count() or 1)
 CONNECT_SECONDS = 10
 
 
@@ -62,17 +65,19 @@ class Sweep:
         if self.scheduler == "inline":
             return "inline (this process)"
         if self._cluster is not None:
-            return f"Dask LocalCluster, {self.workers} workers x 1 thread"
+            return f"Dask LocalCluster, {self.workers} worker{'s' * (self.workers != 1)} x 1 thread"
         return f"Dask scheduler {self.scheduler}"
 
-    def map(self, fn, cases: list, *args, desc: str = "cases", journal=None) -> list:
+    def map(self, fn, cases: list, *args, desc: str = "cases", journal=None, key=None, on_result=None) -> list:
         """``[fn(case, *args) for case in cases]``, run as Dask tasks; results in the cases' order.
 
-        With a ``journal`` (journal.Journal), cases whose ``key`` it holds are not run again and
-        each new result is appended to it as it finishes."""
+        With a ``journal`` (records.Records), cases whose key (``key(case)``, default
+        ``case.key``) it holds are not run again and each new result is appended to it as it
+        finishes; ``on_result(case, result)`` is called as each one arrives (in this process)."""
         from tqdm import tqdm
+        key = key or (lambda c: c.key)
         done = journal.done if journal is not None else {}
-        out = [done.get(c.key) for c in cases]
+        out = [done.get(key(c)) for c in cases]
         todo = [i for i, r in enumerate(out) if r is None]
         bar = tqdm(total=len(cases), initial=len(cases) - len(todo), desc=desc, unit="case", file=sys.stderr,
                    disable=not (self.progress and sys.stderr.isatty()))
@@ -80,7 +85,9 @@ class Sweep:
         def finished(i, result):
             out[i] = result
             if journal is not None:
-                journal.add(result)
+                journal.add(key(cases[i]), result)
+            if on_result is not None:
+                on_result(cases[i], result)
             bar.update()
         try:
             if self._client is None:
