@@ -61,17 +61,20 @@ def run_accuracy_case(case) -> list[dict]:
     return rows
 
 
-def accuracy_runs(modes, quick=False, engines=(), progress=None) -> list[dict]:
-    """Rows of the whole sweep, case by case (the progress bar's total grows by the case count)."""
+def accuracy_runs(modes, quick=False, engines=(), progress=None, sweep=None, records=None) -> list[dict]:
+    """Rows of the whole sweep (the progress bar's total grows by the case count).  The cases
+    (figures, no timings) run side by side on ``sweep`` (bench/sweep.py; None: here, in turn),
+    each into ``records`` as it finishes."""
+    from .sweep import run_cases
     cases = accuracy_cases(modes, quick, engines)
     if progress:
         progress.total += len(cases)
         progress.refresh()
-    rows = []
-    for case in cases:
-        if progress:
-            progress.set_description(f"accuracy: {case_label(case)} dt=1/{round(1 / case.dt)}"[:60])
-        rows += run_accuracy_case(case)
-        if progress:
-            progress.update(1)
-    return rows
+    outs = run_cases(sweep, run_accuracy_case, cases, accuracy_key, progress, records,
+                     label=lambda c: f"accuracy: {case_label(c)} dt=1/{round(1 / c.dt)}")
+    return [row for rows in outs for row in rows]
+
+
+def accuracy_key(case) -> str:
+    """An accuracy case's name in a results file."""
+    return f"accuracy {case.engine} {case_label(case)} dt={case.dt!r} {','.join(case.names)}"

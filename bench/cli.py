@@ -19,6 +19,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import sys
 from pathlib import Path
 
 from .configs import QUICK_MODES, available_modes
@@ -53,11 +54,17 @@ def parser() -> argparse.ArgumentParser:
     ap.add_argument("--budget", type=float, default=None, help="seconds per configuration and scene before it is cut")
     ap.add_argument("--write-docs", action="store_true", help="rewrite docs/benchmarks.md from this run")
     ap.add_argument("--docs-only", action="store_true", help="re-plot and rewrite the docs from the saved results")
+    ap.add_argument("--scheduler", default=None,
+                    help="a Dask scheduler address for the speed and accuracy cases (default: a local cluster, one "
+                         "one-thread worker per core, so a timing case has its worker to itself), or 'inline'")
+    ap.add_argument("--resume", action="store_true",
+                    help="skip the speed and accuracy cases already in OUT/cases.jsonl (where every finished case "
+                         "streams as it arrives)")
     ap.add_argument("--tiny", action="store_true", help=argparse.SUPPRESS)  # tests: even smaller than --quick
     return ap
 
 
-def options(a) -> RunOptions:
+def options(a, outdir=None) -> RunOptions:
     """RunOptions from parsed arguments; SystemExit (argparse's error) for an unknown scene or part."""
     quick = a.quick or a.tiny
     modes = a.modes.split(",") if a.modes else available_modes()
@@ -80,7 +87,8 @@ def options(a) -> RunOptions:
     if bad:
         parser().error(f"unknown engine: {', '.join(bad)} (known: {', '.join(ENGINES)})")
     return RunOptions(modes=modes, scenes=scenes, parts=parts, engines=() if a.no_refs else refs,
-                      quick=a.quick, tiny=a.tiny, budget_s=a.budget or 20.0)
+                      quick=a.quick, tiny=a.tiny, budget_s=a.budget or 20.0, scheduler=a.scheduler,
+                      results=None if outdir is None else Path(outdir) / "cases.jsonl", resume=a.resume)
 
 
 def main(argv=None) -> int:
@@ -92,7 +100,12 @@ def main(argv=None) -> int:
         write_outputs(res, outdir)
         print(f"wrote {write_docs(res, outdir)}")
         return 0
-    res = run(options(a))
+    outdir.mkdir(parents=True, exist_ok=True)
+    try:
+        res = run(options(a, outdir))
+    except (ValueError, ImportError) as exc:  # an unreachable scheduler, a results file of another run
+        print(f"bench: {exc}", file=sys.stderr)
+        return 1
     pngs = write_outputs(res, outdir)
     print_report(res)
     print(f"\nresults: {outdir} ({', '.join(p.name for p in pngs)}); wall {res['meta']['wall_s']:.0f} s")

@@ -2,6 +2,7 @@
 in order, into one result dict (what bench.json holds)."""
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import sys
 import time
@@ -16,6 +17,7 @@ from .report.files import meta
 from .scaling import scaling
 from .scenes import SCENES
 from .speed import speed_scene
+from .sweep import Sweep, open_records
 from .startup import compile_times, source_hash
 
 PARTS = ("overhead", "compile", "speed", "scaling", "accuracy", "profile")
@@ -25,7 +27,10 @@ PARTS = ("overhead", "compile", "speed", "scaling", "accuracy", "profile")
 class RunOptions:
     """What to run: solver ``modes``, benchmark ``scenes`` (keys of SCENES), ``parts`` (of PARTS),
     reference ``engines`` (empty: none), ``quick`` (defaults only, short runs), ``tiny`` (tests:
-    shorter still), ``budget_s`` (seconds per configuration and scene before it is cut)."""
+    shorter still), ``budget_s`` (seconds per configuration and scene before it is cut),
+    ``scheduler`` (bench/sweep.py: None a local Dask cluster, an address, or "inline"),
+    ``results`` (a JSON-lines file each speed and accuracy case streams into; None: none) and
+    ``resume`` (skip the cases already in it)."""
     modes: list
     scenes: list
     parts: set
@@ -33,6 +38,9 @@ class RunOptions:
     quick: bool = False
     tiny: bool = False
     budget_s: float = 20.0
+    scheduler: str | None = None
+    results: object = None
+    resume: bool = False
 
     @property
     def main_mode(self) -> str:
@@ -59,12 +67,12 @@ def _units(opts, configs) -> int:
     return n + (len(opts.scale_ns()) if "scaling" in opts.parts else 0)
 
 
-def _speed(opts, configs, res, bar):
+def _speed(opts, configs, res, bar, sweep, records):
     res["speed"] = []
     for s in opts.scenes:
         plan = opts.plan(s)
         cf = [c for m in opts.modes for c in (configs[m] if SCENES[s].sweep else configs[m][:1])]
-        rows, src = speed_scene(s, cf, plan, opts.engines, opts.budget_s, bar)
+        rows, src = speed_scene(s, cf, plan, opts.engines, opts.budget_s, bar, sweep, records)
         res["speed"] += rows
         res["scenes"][s] = dict(source=src, title=SCENES[s].title, error=SCENES[s].error, **plan)
 
@@ -106,25 +114,55 @@ def run(opts) -> dict:
     configs = {m: configs_for(m, quick) for m in opts.modes}
     parts = opts.parts
     bar = tqdm(total=_units(opts, configs), unit="run", dynamic_ncols=True, file=sys.stderr)
-    try:
-        if "compile" in parts:
-            # cold: the main mode only (every other mode's first use shows as its first step below)
-            bar.set_description("compile: cold start of the default mode (subprocess)")
-            res["compile"] = compile_times([opts.main_mode], ("cold",))
-        if "overhead" in parts:
-            bar.set_description("overhead per step")
-            res["overhead"] = overhead(opts.modes, reps=4000 if quick else 20000)
-        if "speed" in parts:
-            _speed(opts, configs, res, bar)
-        if "scaling" in parts:
-            res["scaling"] = scaling(opts.scale_ns(), opts.main_mode, opts.engines, bar)
-        if "accuracy" in parts:
-            res["accuracy"] = accuracy_runs(opts.modes, quick, opts.engines, bar)
-        if "profile" in parts:
-            _profile(opts, res, bar)
-        if "compile" in parts:
-            _cached_start(opts, res, bar)
-    finally:
-        bar.close()
+    with _sweep(opts, parts, bar) as sweep, _records(opts) as records:
+        try:
+            _parts(opts, parts, configs, res, bar, sweep, records)
+        finally:
+            bar.close()
     res["meta"]["wall_s"] = time.perf_counter() - t_all
+    res["meta"]["where"] = sweep.where if sweep is not None else "this process"
     return res
+
+
+@contextlib.contextmanager
+def _sweep(opts, parts, bar):
+    """The Dask sweep of the speed and accuracy cases (None when neither part runs)."""
+    if not {"speed", "accuracy"} & set(parts):
+        yield None
+        return
+    bar.set_description("starting the Dask workers" if opts.scheduler is None else "connecting")
+    with Sweep(opts.scheduler, progress=False) as sweep:
+        yield sweep
+
+
+@contextlib.contextmanager
+def _records(opts):
+    keep = dict(quick=opts.quick, tiny=opts.tiny, engines=list(opts.engines), budget_s=opts.budget_s)
+    records = open_records(opts.results, "bench", keep, opts.resume) if opts.results is not None else None
+    try:
+        yield records
+    finally:
+        if records is not None:
+            records.close()
+
+
+def _parts(opts, parts, configs, res, bar, sweep, records):
+    """Run the chosen parts in order into ``res``."""
+    quick = opts.quick or opts.tiny
+    if "compile" in parts:
+        # cold: the main mode only (every other mode's first use shows as its first step below)
+        bar.set_description("compile: cold start of the default mode (subprocess)")
+        res["compile"] = compile_times([opts.main_mode], ("cold",))
+    if "overhead" in parts:
+        bar.set_description("overhead per step")
+        res["overhead"] = overhead(opts.modes, reps=4000 if quick else 20000)
+    if "speed" in parts:
+        _speed(opts, configs, res, bar, sweep, records)
+    if "scaling" in parts:
+        res["scaling"] = scaling(opts.scale_ns(), opts.main_mode, opts.engines, bar)
+    if "accuracy" in parts:
+        res["accuracy"] = accuracy_runs(opts.modes, quick, opts.engines, bar, sweep, records)
+    if "profile" in parts:
+        _profile(opts, res, bar)
+    if "compile" in parts:
+        _cached_start(opts, res, bar)

@@ -100,20 +100,22 @@ def reference_rows(key, plan, dt, source, engines, pooled) -> list[dict]:
     return rows
 
 
-def speed_scene(key, configs, plan, engines=(), budget_s=None, progress=None):
+def speed_scene(key, configs, plan, engines=(), budget_s=None, progress=None, sweep=None, records=None):
     """Rows for every configuration (and one per reference engine) on scene ``key``, and the
-    scene's source; ([], None) when the scene cannot be built."""
+    scene's source; ([], None) when the scene cannot be built.  The cases run on ``sweep``
+    (bench/sweep.py: one timing case per one-thread worker; None: here, in turn), each into
+    ``records`` as it finishes."""
+    from .sweep import run_cases
     cases = speed_cases(key, configs, plan, engines, budget_s)
     if not cases:
         return [], None
     engines = scene_engines(key, engines)
+    # the references' end figures are measured once per scene: in its first case
+    cases = [dataclasses.replace(c, ref_metrics=bool(engines) and i == 0) for i, c in enumerate(cases)]
+    outs = run_cases(sweep, run_speed_case, cases, speed_key, progress, records,
+                     label=lambda c: f"{key}: {c.config.label}")
     rows, pooled = [], {e: {"chunks": [], "first": None, "metrics": None} for e in engines}
-    for case in cases:
-        if progress:
-            progress.set_description(f"{key}: {case.config.label}"[:60])
-        # the references' end figures are measured once per scene, in the first complete run
-        want = bool(engines) and not any(p["metrics"] for p in pooled.values())
-        out = run_speed_case(dataclasses.replace(case, ref_metrics=want))
+    for out in outs:
         rows.append(out["row"])
         for e, r in out["refs"].items():
             pooled[e]["chunks"] += r["chunks"]
@@ -121,9 +123,12 @@ def speed_scene(key, configs, plan, engines=(), budget_s=None, progress=None):
                 pooled[e]["first"] = r["first"]
             if r["metrics"] is not None:
                 pooled[e]["metrics"] = r["metrics"]
-        if progress:
-            progress.update(1)
-        gc.collect()
+    gc.collect()
     sd = cases[0].scene
     rows += reference_rows(key, plan, sd.desc["world"]["dt"], sd.source, engines, pooled)
     return rows, sd.source
+
+
+def speed_key(case) -> str:
+    """A speed case's name in a results file."""
+    return f"speed {case.scene.key} {case.config.label} steps={case.plan.steps}"

@@ -76,3 +76,23 @@ def run_probe(probe: Probe, solver: str, quick: bool = False, **kw) -> Outcome:
         out = Outcome(FAILED, f"crashed: {type(exc).__name__}: {exc}"[:160])
     out.seconds = time.perf_counter() - t0
     return out
+
+
+@dataclass(frozen=True)
+class ProbeCase:
+    """One probe (its measure's function name) in one solver mode: plain data, so it runs the
+    same on any Dask worker (bench/sweep.py)."""
+    probe: str
+    mode: str
+    quick: bool = False
+
+    @property
+    def key(self) -> str:
+        """``probe mode``: the case's name in a results file."""
+        return f"{self.probe} {self.mode}"
+
+
+def probe_task(case: ProbeCase) -> Outcome:
+    """``run_probe`` of the case's probe and mode: the function the sweep sends to the workers."""
+    probe = next(p for p in PROBES if p.measure.__name__ == case.probe)
+    return run_probe(probe, case.mode, quick=case.quick)
