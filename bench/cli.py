@@ -4,6 +4,11 @@
     python -m bench --quick         # CI smoke (< 2 min): defaults only, short runs
     python -m bench --write-docs    # full run, then rewrite docs/benchmarks.md
     python -m bench --docs-only     # re-plot and rewrite the docs from bench/results/bench.json
+    python -m bench --scheduler tcp://HOST:8786   # the speed and accuracy cases on a Dask cluster
+
+The speed and accuracy cases run as Dask tasks (bench/sweep.py): by default a local cluster of
+one one-thread worker per core, so a timing case has its worker to itself; every finished case
+streams to OUT/cases.jsonl and --resume skips those already there.
 
 Speed: every configuration runs its scene in chunks of steps, interleaved chunk by
 chunk with pymunk, pybox2d and Box2D v3 (built from its C sources, bench/box2d/) on

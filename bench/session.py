@@ -114,11 +114,11 @@ def run(opts) -> dict:
     configs = {m: configs_for(m, quick) for m in opts.modes}
     parts = opts.parts
     bar = tqdm(total=_units(opts, configs), unit="run", dynamic_ncols=True, file=sys.stderr)
-    with _sweep(opts, parts, bar) as sweep, _records(opts) as records:
-        try:
+    try:  # the bar is closed however the run ends (an unreachable scheduler fails on entry)
+        with _sweep(opts, parts, bar) as sweep, _records(opts) as records:
             _parts(opts, parts, configs, res, bar, sweep, records)
-        finally:
-            bar.close()
+    finally:
+        bar.close()
     res["meta"]["wall_s"] = time.perf_counter() - t_all
     res["meta"]["where"] = sweep.where if sweep is not None else "this process"
     return res

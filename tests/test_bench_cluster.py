@@ -9,6 +9,9 @@ import math
 
 from dask_procs import dask_cluster
 
+# bench.cli (and the engines it imports) at import time, not under capsys: an import under it
+# left sys.stdout on capsys's closed buffer for the later tests (tests/test_bench_smoke.py)
+from bench import cli
 from bench.accuracy_runs import accuracy_runs
 from bench.reliability import cli as rel
 from bench.reliability.probes import PROBES
@@ -73,7 +76,6 @@ def test_unreachable_scheduler_is_a_clear_error_and_writes_nothing(tmp_path, mon
     err = capsys.readouterr().err
     assert code == 1 and "scheduler: cannot reach tcp://127.0.0.1:9" in err and "Traceback" not in err
     assert not out.exists()
-    from bench import cli
     bench_out = tmp_path / "bench"
     assert cli.main(["--tiny", "--no-refs", "--parts", "accuracy", "--modes", "soft_step", "--out", str(bench_out),
                      "--scheduler", "tcp://127.0.0.1:9"]) == 1
