@@ -61,7 +61,9 @@ def parser() -> argparse.ArgumentParser:
     ap.add_argument("--docs-only", action="store_true", help="re-plot and rewrite the docs from the saved results")
     ap.add_argument("--scheduler", default=None,
                     help="a Dask scheduler address for the speed and accuracy cases (default: a local cluster, one "
-                         "one-thread worker per core, so a timing case has its worker to itself), or 'inline'")
+                         "one-thread worker per core, so a timing case has its worker to itself; with --quick: "
+                         "'inline', this process, since starting workers that load the kernels costs more than "
+                         "the smoke run's few cases), or 'inline'")
     ap.add_argument("--resume", action="store_true",
                     help="skip the speed and accuracy cases already in OUT/cases.jsonl (where every finished case "
                          "streams as it arrives)")
@@ -92,7 +94,8 @@ def options(a, outdir=None) -> RunOptions:
     if bad:
         parser().error(f"unknown engine: {', '.join(bad)} (known: {', '.join(ENGINES)})")
     return RunOptions(modes=modes, scenes=scenes, parts=parts, engines=() if a.no_refs else refs,
-                      quick=a.quick, tiny=a.tiny, budget_s=a.budget or 20.0, scheduler=a.scheduler,
+                      quick=a.quick, tiny=a.tiny, budget_s=a.budget or 20.0,
+                      scheduler=a.scheduler if a.scheduler is not None else ("inline" if quick else None),
                       results=None if outdir is None else Path(outdir) / "cases.jsonl", resume=a.resume)
 
 
