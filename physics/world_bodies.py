@@ -89,6 +89,9 @@ class BodiesMixin:
             self._remove_spring(sp)
         s = item._s
         self._events_freeze()  # the last step's events read rows and slots this removal changes
+        # wake its island too: a sleeping pile has no contact rows (the broad phase skips sleeping
+        # pairs), so the bodies resting on a removed sleeper would otherwise float
+        self._touched(s)
         self._touch_neighbours(s)
         for fx in item._fixtures:
             self._drop_fixture_row(fx)

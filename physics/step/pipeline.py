@@ -8,6 +8,10 @@ One step, as data flowing through it (docs/internals.md):
       -> solve (the solver mode: forces, contacts, springs, integration)
       -> islands (sleep)
       -> finish (finite check, then the energy guard: revert and report, or clear user forces)
+      -> events (an accepted step's touching and sensor-overlap sets: events.py)
+
+The broad phase's pairs pass the events stage's filter (events.py: sensor pairs split off in a
+world with sensors and tested after the narrow phase, the user's pair filter when set).
 
 Stages a world does not need are not run: nothing at all while every body
 sleeps, no sleep update with sleeping off.  Every stage reads the step context
