@@ -25,10 +25,15 @@ class ContactBeginEvent(NamedTuple):
     when the two approach."""
 
     fixture_a: object
+    """The fixture with the lower id."""
     fixture_b: object
+    """The other fixture (its body is where ``normal`` points)."""
     point: tuple
+    """(x, y) world point (m), midway between the surfaces, where the approach was fastest."""
     normal: tuple
+    """(x, y) unit normal from fixture_a's body to fixture_b's."""
     approach_speed: float
+    """Relative normal speed (m/s) at ``point`` before the solve, positive when approaching."""
 
 
 class ContactHitEvent(NamedTuple):
@@ -37,10 +42,15 @@ class ContactHitEvent(NamedTuple):
     as :class:`ContactBeginEvent`."""
 
     fixture_a: object
+    """The fixture with the lower id."""
     fixture_b: object
+    """The other fixture (its body is where ``normal`` points)."""
     point: tuple
+    """(x, y) world point (m), midway between the surfaces, where the approach was fastest."""
     normal: tuple
+    """(x, y) unit normal from fixture_a's body to fixture_b's."""
     approach_speed: float
+    """Relative normal speed (m/s) at ``point`` before the solve, positive when approaching."""
 
 
 class ContactEvents(NamedTuple):
@@ -48,8 +58,11 @@ class ContactEvents(NamedTuple):
     ((fixture_a, fixture_b) list, the lower id first) and ``hit`` (ContactHitEvent list)."""
 
     begin: list
+    """ContactBeginEvent of each pair that started touching."""
     end: list
+    """(fixture_a, fixture_b) of each pair that stopped touching (removed fixtures too)."""
     hit: list
+    """ContactHitEvent of each touching contact faster than the hit threshold."""
 
 
 class SensorEvents(NamedTuple):
@@ -57,7 +70,9 @@ class SensorEvents(NamedTuple):
     fixture, visitor fixture)."""
 
     begin: list
+    """(sensor, visitor) of each overlap that started."""
     end: list
+    """(sensor, visitor) of each overlap that ended (removed fixtures too)."""
 
 
 def _pairs(world, keys) -> list:

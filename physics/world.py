@@ -85,7 +85,7 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         self._n_sensors = 0  # sensor fixtures: the step splits sensor pairs off only when there are any
         self._gone_fixtures = {}  # removed fixtures the next step's end events still name
         self._pair_filter = None
-        self.hit_event_threshold = 1.0
+        self._hit_event_threshold = 1.0  # world.hit_event_threshold (world_events.py)
         #: what the scene file this world came from says of itself (name, description, camera);
         #: saving writes it back.  Edit it to change what is saved.
         self.metadata: dict = {}
