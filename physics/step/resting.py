@@ -13,22 +13,26 @@ from ..store import DYNAMIC, STATIC
 LOW = 0xFFFFFFFF
 
 
-def _resting(F, i, j) -> bool:
-    ki, kj = int(F.kind[i]), int(F.kind[j])
-    if ki != DYNAMIC and kj != DYNAMIC:
-        return False  # no body of the pair can move: the pair is gone, not asleep
-    ai, aj = int(F.awake[i]), int(F.awake[j])
-    return (ai == 0 and aj == 0) or (ai == 0 and kj == STATIC) or (aj == 0 and ki == STATIC)
-
-
 def kept(world, keys: np.ndarray) -> np.ndarray:
     """For each fixture-pair key (id << 32 | id) that left this step's pairs: True when both
     fixtures live and the pair was skipped for sleeping (F.kind/F.awake as the step's broad
     phase saw them)."""
-    slot_of = world._store.fixtures.slot_of
     F = world._store.fixtures.view
+    nf = world._store.fixtures.n
     out = np.zeros(len(keys), bool)
-    for k, key in enumerate(keys.tolist()):
-        i, j = slot_of.get(key >> 32), slot_of.get(key & LOW)
-        out[k] = i is not None and j is not None and _resting(F, i, j)
-    return out
+    # a pair skipped for sleeping has a sleeping dynamic body: without one (rain, a falling
+    # pile) that one vector test is all
+    if not len(keys) or not nf or not np.any((F.awake[:nf] == 0) & (F.kind[:nf] == DYNAMIC)):
+        return out
+    ids = F.id[:nf]
+    top = int(ids.max())
+    slot = np.full(top + 2, -1, np.int64)  # fixture id -> slot; top + 1: every id not alive
+    slot[ids] = np.arange(nf)
+    i = slot[np.minimum(keys >> 32, top + 1)]
+    j = slot[np.minimum(keys & LOW, top + 1)]
+    live = (i >= 0) & (j >= 0)
+    i, j = np.where(live, i, 0), np.where(live, j, 0)
+    ki, kj = F.kind[i], F.kind[j]
+    si, sj = F.awake[i] == 0, F.awake[j] == 0  # asleep as the step's broad phase saw them
+    moving = (ki == DYNAMIC) | (kj == DYNAMIC)  # no body of the pair can move: gone, not asleep
+    return live & moving & ((si & sj) | (si & (kj == STATIC)) | (sj & (ki == STATIC)))
