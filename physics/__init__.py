@@ -9,6 +9,7 @@
 from . import _jit  # noqa: F401  (configures numba's cache before any kernel is defined)
 from .body import Body
 from .errors import SceneError, SimulationError
+from .events import ContactBeginEvent, ContactEvents, ContactHitEvent, SensorEvents
 from .fixture import Fixture
 from .geometry.capsule import Capsule, Segment
 from .geometry.chain import Chain, ChainSegment
@@ -20,6 +21,7 @@ from .spring import Spring
 from .world import World
 
 __all__ = ["World", "Body", "Fixture", "Spring", "Joint", "RayHit", "ShapeHit", "Polygon", "Circle", "Capsule", "Segment", "Chain", "ChainSegment", "decompose", "SceneError", "SimulationError",
+           "ContactEvents", "ContactBeginEvent", "ContactHitEvent", "SensorEvents",
            "load_scene", "save_scene", "solvers_available", "tune"]
 
 

@@ -41,13 +41,16 @@ class Body:
         return list(self._fixtures)
 
     def add_fixture(self, shape, density=None, friction=None, restitution=None, category=1,
-                    mask=(1 << 64) - 1, group=0, name=None):
+                    mask=(1 << 64) - 1, group=0, name=None, sensor=False):
         """Attach one more shape; returns its physics.Fixture.
 
         Material defaults to the first fixture's; ``category``/``mask`` are filter bits
         (0 .. 2^64 - 1), ``group`` a whole number (see physics.Fixture).  Mass, centre of mass
-        and inertia follow; the body origin stays.  ValueError naming the bad field."""
-        return self._world._add_fixture(self, shape, density, friction, restitution, category, mask, group, name)
+        and inertia follow; the body origin stays.  ``sensor=True`` makes a sensor: it adds no
+        mass, never pushes, and reports the fixtures it overlaps (``world.sensor_events()``).
+        ValueError naming the bad field."""
+        return self._world._add_fixture(self, shape, density, friction, restitution, category, mask, group, name,
+                                         sensor)
 
     def remove_fixture(self, fixture) -> None:
         """Detach ``fixture``; mass, centre of mass and inertia follow.  ValueError for a fixture
@@ -190,7 +193,7 @@ class Body:
         if not isinstance(value, str) or value not in KINDS:
             raise ValueError(f"kind: must be one of {list(KINDS)}, got {shown(value)}")
         s = self._s
-        self._world._check_mass(KINDS[value], [fx.shape for fx in self._fixtures], None)
+        self._world._check_mass(KINDS[value], [fx.shape for fx in self._fixtures if not fx.sensor], None)
         self._B.kind[s] = KINDS[value]
         self._world._place_body(self)
         if value == "static":  # a static body never moves

@@ -60,6 +60,7 @@ class Fixture:
     (-2^31 .. 2^31 - 1) and ``name`` are assignable live.  Two fixtures collide when
     ``(a.category & b.mask) and (b.category & a.mask)``, unless they share a non-zero group:
     positive always collide, negative never (Box2D).  Fixtures of one body never collide.
+    ``sensor`` makes it a sensor (no mass, no contact; it reports overlaps).
     """
 
     __slots__ = ("_world", "_id", "_shape", "_body", "_name")
@@ -187,6 +188,26 @@ class Fixture:
     def group(self, value):
         self._F.group[self._f] = filter_group(value)
         self._changed()
+
+    # -- sensor ----------------------------------------------------------
+    @property
+    def sensor(self) -> bool:
+        """Whether this fixture is a sensor (default False): it adds no mass, makes no contact
+        in any solver mode and reports the fixtures it overlaps in ``world.sensor_events()``
+        (the filter applies; sensors never detect other sensors).  Settable: the body's mass
+        follows, its contacts end or begin at the next step.  ValueError for a non-bool, or
+        for leaving a dynamic body without a solid shape."""
+        return bool(self._F.sensor[self._f])
+
+    @sensor.setter
+    def sensor(self, value):
+        self._world._set_sensor(self, value)
+
+    @property
+    def visitors(self) -> list:
+        """The fixtures this sensor overlaps after the last step (a new list; empty for a
+        fixture that is not a sensor): the ``visitor`` of every begin without its end yet."""
+        return [v for s, v in self._world.sensor_overlaps() if s is self]
 
     def __repr__(self):
         if not self.alive:

@@ -51,7 +51,7 @@ class Snapshot:
     """
 
     __slots__ = ("tables", "next_ids", "verts", "contacts", "joint_meta", "shapes", "world", "settings",
-                 "pipeline", "guard")
+                 "pipeline", "guard", "events")
 
     @property
     def time(self) -> float:
@@ -101,6 +101,7 @@ def take(world) -> Snapshot:
     p = world._pipeline
     snap.pipeline = (p.n_awake, int(p._islands.label[0]), p.ctx.array.copy())
     snap.guard = {k: getattr(p._guard, k, math.nan) for k in GUARD_FIELDS}
+    snap.events = p.events.state()  # touching and overlap sets: the next step's events follow from them
     return snap
 
 
@@ -186,3 +187,5 @@ def restore(world, snap: Snapshot) -> None:
     p.ctx.array[0] = ctx[0]  # the last step's dt: what views.contacts scales impulses by
     for k, v in snap.guard.items():
         setattr(p._guard, k, v)
+    p.events.put(getattr(snap, "events", ((), (), {})))  # the events of the step before are cleared
+    world._n_sensors = int(np.count_nonzero(st.fixtures.view.sensor[: st.fixtures.n]))

@@ -30,9 +30,10 @@ RenderData = namedtuple(
 
 #: one row per fixture for drawing (RenderData.fixtures): its id, body slot, shape code
 #: (store/fixtures.py), radius, core vertices in RenderData.vertices (vstart, vcount) and a
-#: circle's world centre
+#: circle's world centre, and whether it is a sensor
 FIXTURE_DRAW_DTYPE = np.dtype([("id", np.int64), ("body", np.int32), ("shape", np.int8), ("radius", np.float64),
-                               ("vstart", np.int32), ("vcount", np.int32), ("center", np.float64, (2,))])
+                               ("vstart", np.int32), ("vcount", np.int32), ("center", np.float64, (2,)),
+                               ("sensor", np.bool_)])
 
 #: one row per joint for drawing (RenderData.joints): its id and kind code (store/joints.py
 #: JOINT_KINDS), world anchors on a and b (b's is the world point for a world joint), the axis
@@ -165,6 +166,7 @@ def fixture_rows(st) -> np.ndarray:
     for name in ("id", "body", "shape", "radius", "vstart", "vcount"):
         out[name] = getattr(F, name)[:nf]
     out["center"] = F.wcenter[:nf]
+    out["sensor"] = F.sensor[:nf] != 0
     return out
 
 

@@ -25,6 +25,7 @@ from .world_queries import QueriesMixin
 from .world_batch import BatchMixin
 from .world_springs import SpringsMixin
 from .world_snapshot import SnapshotMixin
+from .world_events import EventsMixin
 
 __all__ = ["World", "Contact", "RenderData", "STATE_DTYPE", "DT_MIN"]
 
@@ -45,7 +46,8 @@ def _tolerance(field: str, doc: str = ""):
     return property(get, put, doc=doc)
 
 
-class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, SpringsMixin, SnapshotMixin):
+class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, SpringsMixin, SnapshotMixin,
+            EventsMixin):
     """A 2D rigid-body world.
 
     ``World(gravity=(0, -9.81), dt=1/60, solver="soft_step")``; add bodies with
@@ -80,6 +82,10 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         self._joint_names = Names("joint")
         self._settings: dict[str, ModeValues] = {}
         self._pipeline = Pipeline()
+        self._n_sensors = 0  # sensor fixtures: the step splits sensor pairs off only when there are any
+        self._gone_fixtures = {}  # removed fixtures the next step's end events still name
+        self._pair_filter = None
+        self._hit_event_threshold = 1.0  # world.hit_event_threshold (world_events.py)
         #: what the scene file this world came from says of itself (name, description, camera);
         #: saving writes it back.  Edit it to change what is saved.
         self.metadata: dict = {}

@@ -63,7 +63,7 @@ class BodiesMixin:
         first = body._fixtures[0]
         s = body._s
         dens = checked_density(first.density, shape)
-        self._check_mass(int(self._bodies.view.kind[s]), shapes, dens)
+        self._check_mass(int(self._bodies.view.kind[s]), [] if first.sensor else shapes, dens)
         origin = np.array(body.position)
         self._touch_neighbours(s)
         for fx in body._fixtures[1:]:
@@ -88,6 +88,10 @@ class BodiesMixin:
                    if sp.body_a is item or sp.body_b is item]:
             self._remove_spring(sp)
         s = item._s
+        self._events_freeze()  # the last step's events read rows and slots this removal changes
+        # wake its island too: a sleeping pile has no contact rows (the broad phase skips sleeping
+        # pairs), so the bodies resting on a removed sleeper would otherwise float
+        self._touched(s)
         self._touch_neighbours(s)
         for fx in item._fixtures:
             self._drop_fixture_row(fx)

@@ -17,7 +17,7 @@ from .geometry.mass import compound_mass
 from .geometry.shapes import Circle, Polygon, Shape
 from .store import DYNAMIC
 from .store.fixtures import ALL_BITS, CAPSULE, CHAIN_SEGMENT, CIRCLE, DEFAULT_CATEGORY, POLYGON, SEGMENT
-from .validate import checked_density, finite_num, friction_pair
+from .validate import checked_density, finite_num, flag, friction_pair
 
 _CODES = ((Polygon, POLYGON), (Circle, CIRCLE), (Capsule, CAPSULE), (Segment, SEGMENT),
           (ChainSegment, CHAIN_SEGMENT))
@@ -63,13 +63,17 @@ class FixturesMixin:
     """The fixture half of :class:`~physics.World` (see world.py for the state it uses)."""
 
     def _check_mass(self, kind_code: int, shapes, densities) -> None:
-        """A dynamic body needs area: ValueError for one made only of segments."""
+        """A dynamic body needs area: ValueError for one made only of segments (``shapes``: the
+        body's non-sensor shapes; sensors weigh nothing)."""
+        if kind_code == DYNAMIC and not shapes:
+            raise ValueError("sensor: a dynamic body needs a shape that is not a sensor (sensors have no mass); "
+                             "make the body static or kinematic, or add a solid shape")
         if kind_code == DYNAMIC and all(s.area == 0.0 for s in shapes):
             raise ValueError("shape: a dynamic body needs a shape with area (segments and chains have none); "
                              "make it static or kinematic, or add a polygon, circle or capsule")
 
     def _new_fixture(self, body, shape, density, e, mu_s, mu_d, category=DEFAULT_CATEGORY, mask=ALL_BITS,
-                     group=0, name=None) -> Fixture:
+                     group=0, name=None, sensor=False) -> Fixture:
         """A fixture row for ``body`` (placed by the next :meth:`_place_body`)."""
         fid, f = self._store.fixtures.add()
         F = self._store.fixtures.view
@@ -82,6 +86,8 @@ class FixturesMixin:
         F.category[f] = category
         F.mask[f] = mask
         F.group[f] = group
+        F.sensor[f] = sensor
+        self._n_sensors += bool(sensor)
         h = Fixture(self, fid, shape, body, name)
         self._fixture_handles[fid] = h
         return h
@@ -89,10 +95,13 @@ class FixturesMixin:
     def _drop_fixture_row(self, fx: Fixture) -> None:
         F = self._store.fixtures.view
         f = fx._f
+        self._events_freeze()  # the last step's events read rows this removal renumbers
+        self._n_sensors -= int(F.sensor[f] != 0)
         if F.vcount[f]:
             self._verts.release(int(F.vcount[f]))
         self._store.fixtures.remove(fx.id)
         del self._fixture_handles[fx.id]
+        self._gone_fixtures[fx.id] = fx  # the next step's end events still name it
 
     def _place_body(self, body, origin=None) -> None:
         """Mass, centre of mass, inertia and fixture geometry of ``body`` from its fixtures.
@@ -109,7 +118,9 @@ class FixturesMixin:
         fx = body._fixtures
         slots = [f._f for f in fx]
         parts = [f.shape.mass_properties(float(F.density[k])) for f, k in zip(fx, slots)]
-        m, com, inertia = compound_mass(parts)
+        solid = [p for p, k in zip(parts, slots) if not F.sensor[k]]
+        # sensors weigh nothing; a body of sensors only (static or kinematic) keeps their frame
+        m, com, inertia = compound_mass(solid if solid and len(solid) < len(parts) else parts)
         B.m[s] = m
         B.inertia[s] = inertia
         dyn = B.kind[s] == DYNAMIC
@@ -160,7 +171,7 @@ class FixturesMixin:
 
     # -- the body's API ----------------------------------------------------
     def _add_fixture(self, body, shape, density=None, friction=None, restitution=None, category=DEFAULT_CATEGORY,
-                     mask=ALL_BITS, group=0, name=None) -> Fixture:
+                     mask=ALL_BITS, group=0, name=None, sensor=False) -> Fixture:
         """Body.add_fixture: validated; material defaults to the body's first fixture's."""
         shapes = shape_list(shape)
         if len(shapes) != 1:
@@ -171,8 +182,9 @@ class FixturesMixin:
         e = finite_num(first.restitution if restitution is None else restitution, "restitution", lo=0.0, hi=1.0)
         cat, msk = filter_bits(category, "category"), filter_bits(mask, "mask")
         grp, nm = filter_group(group), fixture_name(name)
+        sens = flag(sensor, "sensor")
         self._touch_neighbours(body._s)
-        fx = self._new_fixture(body, shape, dens, e, mu_s, mu_d, cat, msk, grp, nm)
+        fx = self._new_fixture(body, shape, dens, e, mu_s, mu_d, cat, msk, grp, nm, sens)
         body._fixtures.append(fx)
         self._place_body(body)
         self._touched(body._s)
@@ -185,10 +197,26 @@ class FixturesMixin:
         rest = [f for f in body._fixtures if f is not fx]
         if not rest:
             raise ValueError("remove_fixture: a body keeps at least one fixture (remove the body instead)")
-        self._check_mass(int(self._bodies.view.kind[body._s]), [f.shape for f in rest], None)
+        self._check_mass(int(self._bodies.view.kind[body._s]), [f.shape for f in rest if not f.sensor], None)
         self._touch_neighbours(body._s)
         origin = np.array(body.position)
         self._drop_fixture_row(fx)
         body._fixtures = rest
         self._place_body(body, origin)
+        self._touched(body._s)
+
+    def _set_sensor(self, fx, value) -> None:
+        """Fixture.sensor's setter: the body's mass follows; its contacts end or begin next step."""
+        on = flag(value, "sensor")
+        F = self._store.fixtures.view
+        f = fx._f
+        if bool(F.sensor[f]) == on:
+            return
+        body = fx.body
+        solid = [g.shape for g in body._fixtures if g is not fx and not g.sensor] + ([] if on else [fx.shape])
+        self._check_mass(int(self._bodies.view.kind[body._s]), solid, None)
+        self._touch_neighbours(body._s)
+        F.sensor[f] = on
+        self._n_sensors += 1 if on else -1
+        self._place_body(body)
         self._touched(body._s)

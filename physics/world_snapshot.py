@@ -16,7 +16,7 @@ class SnapshotMixin:
 
         Bodies (state, user forces, sleep timers), fixtures, springs, joints (impulses, broken
         flags), contacts with their warm-start impulses and penalty stick state, the settings
-        (every solver mode's), time, step counter and the energy guard's reference: whatever the
+        (every solver mode's), time, step counter and the energy guard's reference, the touching and sensor-overlap sets (events): whatever the
         next step reads.  Restoring it and stepping gives the same bits as the run it came from.
         Copies arrays only (about 0.2 ms for 1000 bodies: ``python -m bench.snapshot``).
 
@@ -45,6 +45,7 @@ class SnapshotMixin:
         snapshot was taken: after adding or removing any, ValueError names what differs and
         nothing changes.  Edits that keep the topology (positions, materials, kinds, settings,
         solver, shapes set with ``set_shape``) are undone.  ``world.fault`` and ``metadata`` are
-        left as they are.
+        left as they are; the events of the step before the restore are cleared (the next
+        step's are those the original run had).
         """
         _snap.restore(self, snap)

@@ -4,7 +4,7 @@ its fixture fields, and a body's fixtures back to shape objects.
 A shape object holds exactly one kind key (box, polygon, regular, circle, capsule, segment,
 chain, concave), an optional ``radius`` that rounds a box, polygon or regular polygon, and
 optionally its fixture's own material and filter (``density``, ``friction``,
-``restitution``, ``category``, ``mask``, ``group``, ``name``; else the body's).  A body has
+``restitution``, ``category``, ``mask``, ``group``, ``name``; else the body's; ``sensor``).  A body has
 ``"shape": {...}`` or ``"shapes": [{...}, ...]``.  A ``concave`` outline is decomposed on
 load (physics.decompose) and saved as the outline; a chain is saved as its points.
 """
@@ -16,13 +16,14 @@ from ..geometry.chain import Chain, ChainSegment
 from ..geometry.decompose import decompose
 from ..geometry.shapes import Circle, Polygon
 from ..store.fixtures import ALL_BITS, DEFAULT_CATEGORY, DEFAULT_GROUP
+from ..validate import flag
 
 KINDS_V1 = ("box", "polygon", "regular", "circle")
 KINDS = KINDS_V1 + ("capsule", "segment", "chain", "concave")
 ROUNDED = ("box", "polygon", "regular")
 MATERIAL = ("density", "friction", "restitution")
 FILTER_DEFAULTS = {"category": DEFAULT_CATEGORY, "mask": ALL_BITS, "group": DEFAULT_GROUP}
-FIXTURE_KEYS = MATERIAL + tuple(FILTER_DEFAULTS) + ("name",)
+FIXTURE_KEYS = MATERIAL + tuple(FILTER_DEFAULTS) + ("name", "sensor")
 
 
 def shape_schema(vec, num, friction_ref) -> dict:
@@ -70,6 +71,8 @@ def shape_schema(vec, num, friction_ref) -> dict:
             "group": {"type": "integer", "minimum": -2 ** 31, "maximum": 2 ** 31 - 1,
                       "description": "shared positive group: always collide; negative: never (default 0)"},
             "name": {"type": "string", "minLength": 1, "description": "fixture name (need not be unique)"},
+            "sensor": {"type": "boolean", "default": False,
+                       "description": "a sensor: no mass, no contact; reports the fixtures it overlaps (version 2)"},
         },
     }
 
@@ -126,6 +129,8 @@ def fixture_fields(spec: dict) -> dict:
             out[k] = filter_bits(out[k], k)
     if "group" in out:
         out["group"] = filter_group(out["group"])
+    if "sensor" in out:
+        out["sensor"] = flag(out["sensor"], "sensor")
     return out
 
 
@@ -145,6 +150,8 @@ def _fields(fx, first, same) -> dict:
             out[k] = getattr(fx, k)
     if fx.name is not None:
         out["name"] = fx.name
+    if fx.sensor:
+        out["sensor"] = True
     return out
 
 

@@ -8,6 +8,10 @@ One step, as data flowing through it (docs/internals.md):
       -> solve (the solver mode: forces, contacts, springs, integration)
       -> islands (sleep)
       -> finish (finite check, then the energy guard: revert and report, or clear user forces)
+      -> events (an accepted step's touching and sensor-overlap sets: events.py)
+
+The broad phase's pairs pass the events stage's filter (events.py: sensor pairs split off in a
+world with sensors and tested after the narrow phase, the user's pair filter when set).
 
 Stages a world does not need are not run: nothing at all while every body
 sleeps, no sleep update with sleeping off.  Every stage reads the step context
@@ -20,13 +24,13 @@ import numpy as np
 
 from .. import options
 from ..collision import broadphase, narrowphase
-from ..collision.broadphase.fixture_filter import filter_pairs
 from ..constraints.joints.work import joint_work
 from ..errors import SimulationError
 from ..geometry.transform import update_geometry
 from ..store import DYNAMIC, KIND_NAMES, STATIC
 from .checkpoint import Checkpoint
 from .energy_guard import EnergyGuard
+from .events import StepEvents
 from .context import ModeParams, StepContext
 from .frame import begin_step, end_step
 from .islands import Islands
@@ -40,6 +44,7 @@ class Pipeline:
         self._checkpoint = Checkpoint()
         self._guard = EnergyGuard()
         self._islands = Islands()
+        self.events = StepEvents()
         self.ctx = StepContext()
         self.profile = StepProfile()
         self._params: dict[str, ModeParams] = {}
@@ -111,10 +116,12 @@ class Pipeline:
             work = joint_work(s)
             work.update(s)
             keys = work.exclude
-        # fixtures of one body, filtered pairs and joined bodies never collide
-        self.npairs = int(filter_pairs(F, self._pairs, self.npairs, keys))
+        # fixtures of one body, filtered pairs and joined bodies never collide; sensor pairs
+        # and the user's pair filter go their own way (events.py)
+        self.npairs = self.events.pairs(world, F, self._pairs, self.npairs, keys)
         self.profile.stamp("broadphase")
         narrowphase.collide(self.ctx, B, F, s.verts.view, self._pairs, self.npairs, s.contacts, world.max_pairs)
+        self.events.sense(self.ctx, s)
         self.ctx.set("nc", s.contacts.n)
         self.profile.stamp("narrowphase")
 
@@ -138,6 +145,8 @@ class Pipeline:
         if n == 0 or (self.n_awake == 0 and world.sleeping):
             world._time += dt
             world.steps += 1
+            if n == 0:
+                self.events.idle(world)
             return
         self.profile.start()
         self._refresh(world, dt)
@@ -184,6 +193,7 @@ class Pipeline:
         world._time += dt
         world.steps += 1
         world.fault = None
+        self.events.commit(world)
 
     #: the stages that write the bodies' state (x, q, v, w); the others read it (collision) or
     #: only zero velocities (islands), so a non-finite state after the step is theirs

@@ -43,6 +43,7 @@ FIXTURE_FIELDS = {
     "category": ((), u8),      # filter: the bits this fixture is
     "mask": ((), u8),          # filter: the bits it collides with
     "group": ((), i4),         # filter: shared positive group always collides, negative never
+    "sensor": ((), i1),        # 1: a sensor: reports overlaps (step/sensor_events.py), no contact, no mass
     "aabb": ((4,), f8),        # min x, min y, max x, max y (fattened by the body's margin)
     "id": ((), i8),            # stable id (handle)
 }

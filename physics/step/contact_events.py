@@ -1,0 +1,108 @@
+"""Which fixture pairs touch, step to step: the arrays behind ``world.contact_events()``.
+
+A contact row touches when one of its points is within ``linear_slop`` of touching
+(depth > -slop, what ``world.contacts()`` shows) or took a normal impulse in the solve (a
+speculative point that stopped an approach).  After each step one compiled pass
+(:func:`touch_update`) merges the rows (sorted by key) with the last step's touching keys:
+new keys are begins (their row numbers kept), keys gone are ends, unless the pair only went
+to sleep (resting.py).  That is all a step pays; the Python events (physics/events.py) are
+made from these arrays, the contact rows and the checkpoint's start-of-step velocities only
+when ``world.contact_events()`` asks.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .._jit import kernel
+from .resting import kept
+
+
+@kernel(_nrt=False)
+def touch_update(key, count, depth, jn, n, slop, prev, nprev, out, begin, absent):
+    """Merge rows ``[:n]`` with the sorted touching keys ``prev[:nprev]``: the touching keys into
+    ``out``, the rows that begin into ``begin``, the keys that stopped into ``absent``; returns
+    the three counts."""
+    nt = 0
+    nb = 0
+    na = 0
+    ptr = 0
+    for r in range(n):
+        touching = False
+        for p in range(count[r]):
+            if depth[r, p] > -slop or jn[r, p] > 0.0:
+                touching = True
+        if not touching:
+            continue
+        k = key[r]
+        while ptr < nprev and prev[ptr] < k:
+            absent[na] = prev[ptr]
+            na += 1
+            ptr += 1
+        if ptr < nprev and prev[ptr] == k:
+            ptr += 1
+        else:
+            begin[nb] = r
+            nb += 1
+        out[nt] = k
+        nt += 1
+    while ptr < nprev:
+        absent[na] = prev[ptr]
+        na += 1
+        ptr += 1
+    return nt, nb, na
+
+
+class ContactTracker:
+    """The touching keys (sorted) and the last step's begins (row numbers) and ends (keys)."""
+
+    def __init__(self):
+        self.keys = np.zeros(64, np.int64)
+        self.n = 0
+        self._next = np.zeros(64, np.int64)
+        self.begin = np.zeros(64, np.int64)
+        self.nb = 0
+        self._absent = np.zeros(64, np.int64)
+        self.ends = self._absent[:0]
+
+    def _ensure(self, n: int) -> None:
+        if n > len(self._next):
+            self._next = np.zeros(2 * n, np.int64)
+            self.begin = np.zeros(2 * n, np.int64)
+        if self.n > len(self._absent):
+            self._absent = np.zeros(2 * self.n, np.int64)
+
+    def update(self, world, slop: float) -> None:
+        """This step's touching pairs from the contact rows (after the solve)."""
+        c = world._store.contacts
+        cur = c.cur
+        self._ensure(c.n)
+        nt, self.nb, na = touch_update(cur.key, cur.count, cur.depth, cur.jn, c.n, slop, self.keys, self.n,
+                                       self._next, self.begin, self._absent)
+        self.keys, self._next, self.n = self._next, self.keys, int(nt)
+        self.ends = self._absent[:na]
+        if na:
+            self._keep_sleeping(world)
+
+    def _keep_sleeping(self, world) -> None:
+        keep = kept(world, self.ends)
+        if keep.any():
+            self.keys = np.union1d(self.keys[:self.n], self.ends[keep])
+            self.n = len(self.keys)
+        self.ends = self.ends[~keep].copy()
+
+    def idle(self) -> None:
+        """A step with no bodies at all: every touching pair ends."""
+        self.ends = self.keys[:self.n].copy()
+        self.n = 0
+        self.nb = 0
+
+    def state(self):
+        """What a snapshot keeps: the touching keys."""
+        return self.keys[:self.n].copy()
+
+    def put(self, keys) -> None:
+        """Restore the touching keys (the events of the last step are gone)."""
+        self.keys = np.array(keys, np.int64)
+        self.n = len(self.keys)
+        self.nb = 0
+        self.ends = self._absent[:0]
