@@ -15,10 +15,10 @@ from .tree import build_tree
 from .world_shapes import world_shapes
 
 
-#: the fixture columns the query kernels read; views of the table's arrays, so filter edits are seen.
+#: the fixture columns the query kernels read (sensors are skipped: filter.accepts); views of the table's arrays, so filter edits are seen.
 #: Passing these six instead of the table's twenty columns cuts a kernel call's unboxing cost
 #: (each array argument costs ~0.2 us to unbox; a one-ray cast from Python is mostly call cost).
-QueryFixtures = namedtuple("QueryFixtures", ["shape", "radius", "vstart", "vcount", "category", "mask"])
+QueryFixtures = namedtuple("QueryFixtures", ["shape", "radius", "vstart", "vcount", "category", "mask", "sensor"])
 
 
 class QueryState:
@@ -33,7 +33,7 @@ class QueryState:
         nf = st.fixtures.n
         self.nf = nf
         F = st.fixtures.view
-        self.qf = QueryFixtures(F.shape, F.radius, F.vstart, F.vcount, F.category, F.mask)
+        self.qf = QueryFixtures(F.shape, F.radius, F.vstart, F.vcount, F.category, F.mask, F.sensor)
         V = st.verts.view
         nv = len(V.local)
         self.wv = np.zeros((nv, 2))

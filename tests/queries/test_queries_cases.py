@@ -144,3 +144,17 @@ def test_every_point_form_gives_the_same_hits():
     for p, e in forms[1:]:
         assert w.ray_cast(p, e) == ref
     assert w.query_aabb((-1, 2), (1, 4)) == w.query_aabb(np.array([-1.0, 2.0]), [1.0, 4.0])
+
+
+def test_queries_pass_through_sensors():
+    # Box2D v3.1: queries skip sensors; a ray through a trigger zone hits the box behind it
+    w = physics.World(gravity=(0, 0))
+    zone = w.add_body(physics.Polygon.box(2, 2), kind="static", position=(0, 0))
+    zone.fixtures[0].sensor = True
+    box = w.add_body(physics.Polygon.box(1, 1), position=(5, 0))
+    [hit] = w.ray_cast((-5, 0), (10, 0))
+    assert hit.body is box and hit.fraction == pytest.approx(9.5 / 15, abs=1e-12)  # its face at x = 4.5
+    assert w.ray_cast_many([[-5.0, 0.0]], [[10.0, 0.0]])["body"][0] == box.id
+    assert w.query_aabb((-1, -1), (1, 1)) == [] and w.query_point_all((0, 0)) == []
+    assert w.overlap(physics.Circle(0.5), (0, 0)) == []
+    assert w.shape_cast(physics.Circle(0.25), (-5, 0), 0.0, (10, 0)).body is box
