@@ -1,21 +1,22 @@
 """Sensors (issue 15) as the sandbox sees them: fixtures with ``fixture.sensor == True`` are drawn
 translucent, and lit while something is inside.  Both questions are asked of the core here and
-nowhere else, so the sandbox follows the core's sensor API (branch events15) by changing these
-two functions."""
+nowhere else."""
 from __future__ import annotations
 
 
 def is_sensor(fixture) -> bool:
-    """Is ``fixture`` a sensor?  (``Fixture.sensor`` comes with events15; until then no fixture is.)"""
-    return bool(getattr(fixture, "sensor", False))
+    """Is ``fixture`` a sensor (``Fixture.sensor``)?"""
+    return bool(fixture.sensor)
 
 
 def visited(world, sensors) -> set:
     """Ids of the ``sensors`` (fixtures) with a visitor inside.
 
-    ADAPTER: the core will report which sensors have visitors (events15).  Until then the app
-    asks ``world.overlap`` with each sensor's shape where it is now: any fixture of another body
-    that is not a sensor itself, touching included, is a visitor.  One query per sensor a frame."""
+    Asked of the geometry where it is now (``world.overlap`` with each sensor's shape; queries
+    never see sensors), not of the core's ``Fixture.visitors``: those are the last step's, and
+    the sandbox also shows a paused scene being edited, and a static body dragged into a static
+    sensor, which the step's sensor stage never pairs (it pairs only where a body is dynamic).
+    Any fixture of another body, touching included, is a visitor.  One query per sensor a frame."""
     lit = set()
     for f in sensors:
         b = f.body

@@ -219,6 +219,7 @@ class Sandbox(pyglet.window.Window):
     def _after_step(self, world):
         if self.sim.running:       # a single step (S) from a paused moment does not record
             self.timeline.record(world)
+        self.panels.stats.contacts.rate.on_step(world)   # the selected body's hits (stats readout)
 
     def preview_scene(self) -> float:
         """Before the kernels are ready: the scene as it stands (paused), framed, from numpy render

@@ -1,6 +1,7 @@
 """The stats window's contact readout: the selected body's contacts with their normal and
 tangent impulses per manifold point (``world.contacts()``, N s over the last step), one of them
-picked to show in full, and the body's contact hits per second (``app.contact_events``)."""
+picked to show in full, and the body's contact hits per second (the core's hit events:
+``app.contact_events``)."""
 from __future__ import annotations
 
 import physics
@@ -49,6 +50,7 @@ class ContactReadout:
         app, b = self.app, self.body()
         app.ui_values["contacts"] = None
         if b is None:
+            self.rate.body = None   # no body watched: the step loop asks the core nothing
             return
         contacts = self.contacts_of(b)
         self.rate.update(app.world, b.id, contacts)

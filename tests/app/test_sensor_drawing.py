@@ -1,9 +1,6 @@
-"""Issue 15, sensor drawing: a fixture with ``sensor == True`` is drawn translucent, and lit while
-something is inside.  The core's ``Fixture.sensor`` (branch events15) is not in main yet, so the
-sandbox under test gets a stand-in through a ``sitecustomize`` module on its PYTHONPATH: the
-fixtures of bodies named ``sensor*`` report ``sensor == True`` (exactly the attribute the core
-will add; the app reads it through ``app.sensors.is_sensor``).  Real mouse drag, pixel checks
-against the colours of app/render/sensors.py blended over the background."""
+"""Issue 15, sensor drawing: a fixture with ``sensor == True`` (the scene's ``"sensor": true``) is
+drawn translucent, and lit while something is inside.  Real mouse drag, pixel checks against
+the colours of app/render/sensors.py blended over the background."""
 from __future__ import annotations
 
 import json
@@ -16,9 +13,6 @@ from test_tools import body, to_screen
 pytestmark = pytest.mark.app
 
 BG = np.array((0.062, 0.072, 0.098))
-STAND_IN = """import physics
-physics.Fixture.sensor = property(lambda f: (f.body.name or "").startswith("sensor"))
-"""
 
 
 def blend(rgba):
@@ -36,8 +30,8 @@ def scene(path):
             "camera": {"center": [0.0, 2.0], "zoom": 40.0},
             "bodies": [
                 {"name": "ground", "kind": "static", "shape": {"box": [16, 1]}, "position": [0, -0.5]},
-                {"name": "sensor_a", "kind": "static", "shape": {"box": [2, 2]}, "position": [-3, 2]},
-                {"name": "sensor_b", "kind": "static", "shape": {"box": [2, 2]}, "position": [3, 2]},
+                {"name": "sensor_a", "kind": "static", "shape": {"box": [2, 2], "sensor": True}, "position": [-3, 2]},
+                {"name": "sensor_b", "kind": "static", "shape": {"box": [2, 2], "sensor": True}, "position": [3, 2]},
                 # last: the topmost body, so a click on it picks it rather than the sensor around it
                 {"name": "visitor", "kind": "static", "shape": {"box": [0.6, 0.6]}, "position": [-3.4, 2.4]}]}
     path.write_text(json.dumps(data))
@@ -46,12 +40,7 @@ def scene(path):
 
 def test_sensors_translucent_and_lit_while_visited(launch, tmp_path):
     from app.render.sensors import LIT_FILL, SENSOR_FILL
-    site = tmp_path / "site"
-    site.mkdir()
-    (site / "sitecustomize.py").write_text(STAND_IN)
-    import os
-    env = {"PYTHONPATH": os.pathsep.join([str(site), os.environ.get("PYTHONPATH", "")])}
-    app = launch(scene(tmp_path / "sensors.json"), "--paused", env=env)
+    app = launch(scene(tmp_path / "sensors.json"), "--paused")
     st = app.wait_ready(10)
     img = app.screenshot("sensors_start")
     lit, unlit = blend(LIT_FILL), blend(SENSOR_FILL)
