@@ -19,7 +19,7 @@ class EventsMixin:
         first) and ``hit`` (:class:`~physics.ContactHitEvent`, approach speed above
         :attr:`hit_event_threshold`).
 
-        A pair touches when a point is within ``linear_slop`` (what :meth:`contacts` shows) or
+        A pair touches when a point is within ``linear_slop`` (what ``world.contacts()`` shows) or
         took a normal impulse; every begin is followed by one end, or the pair still touches
         (a pair that falls asleep still touches; removing a body or fixture ends its contacts
         at the next step, with the removed fixtures).  The next step replaces these events

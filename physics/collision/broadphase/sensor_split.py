@@ -9,7 +9,7 @@ this (the pipeline calls filter_pairs), so it pays nothing for it.
 from __future__ import annotations
 
 from ..._jit import kernel
-from .fixture_filter import _joined, should_collide
+from .fixture_filter import may_collide
 
 
 # _nrt=False for the reason filter_pairs gives (no allocation; no reference counts per column read)
@@ -22,9 +22,7 @@ def split_sensor_pairs(F, pairs, npairs, keys, spairs):
     for p in range(npairs):
         i = pairs[p, 0]
         j = pairs[p, 1]
-        a = F.body[i]
-        b = F.body[j]
-        if a == b or not should_collide(F, i, j) or _joined(keys, a, b):
+        if not may_collide(F, keys, i, j):
             continue
         si = F.sensor[i] != 0
         sj = F.sensor[j] != 0

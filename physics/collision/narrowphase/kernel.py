@@ -173,6 +173,15 @@ def _write_row(C, row, B, F, fa, fb, a, b, key, count, nx, ny, out_p, out_s, out
 
 
 @kernel
+def manifold_scratch():
+    """The scratch arrays one ``_manifold`` call works in (support cores, simplex, clip polygon,
+    output points), allocated once per kernel call and reused for every pair."""
+    return (np.empty((MAX_POLYGON_VERTICES, 2)), np.empty((MAX_POLYGON_VERTICES, 2)), np.empty((3, 2)),
+            np.empty((3, 2), np.int64), np.empty(3), np.empty((2 * MAX_POLYGON_VERTICES + 4, 2)),
+            np.zeros((2, 2)), np.zeros(2), np.zeros(2, np.int32))
+
+
+@kernel
 def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev):
     """Fill C (rows sorted by key, point state carried over from P); returns the row count.
 
@@ -183,15 +192,7 @@ def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev):
     """
     keys = pair_keys(F, pairs, npairs)
     order = np.argsort(keys)
-    sc_a = np.empty((MAX_POLYGON_VERTICES, 2))
-    sc_b = np.empty((MAX_POLYGON_VERTICES, 2))
-    sw = np.empty((3, 2))
-    si = np.empty((3, 2), np.int64)
-    lam = np.empty(3)
-    poly = np.empty((2 * MAX_POLYGON_VERTICES + 4, 2))
-    out_p = np.zeros((2, 2))
-    out_s = np.zeros(2)
-    out_f = np.zeros(2, np.int32)
+    sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f = manifold_scratch()
     c = ctx[0]
     return _rows(B, F, V, pairs, order, keys, C, P, n_prev, c.narrowphase, c.dt, c.spec,
                  sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f)

@@ -6,26 +6,15 @@ separation.  Geometry is the step's (the start-of-step positions the contacts ar
 """
 from __future__ import annotations
 
-import numpy as np
-
 from ..._jit import kernel
-from ...geometry.shapes import MAX_POLYGON_VERTICES
-from .kernel import _manifold
+from .kernel import _manifold, manifold_scratch
 
 
 @kernel
 def sensor_overlaps(ctx, B, F, V, spairs, ns, out):
     """Write the keys (sensor id << 32) | visitor id of the overlapping pairs of ``spairs[:ns]``
     to ``out``; returns their count (in pair order)."""
-    sc_a = np.empty((MAX_POLYGON_VERTICES, 2))
-    sc_b = np.empty((MAX_POLYGON_VERTICES, 2))
-    sw = np.empty((3, 2))
-    si = np.empty((3, 2), np.int64)
-    lam = np.empty(3)
-    poly = np.empty((2 * MAX_POLYGON_VERTICES + 4, 2))
-    out_p = np.zeros((2, 2))
-    out_s = np.zeros(2)
-    out_f = np.zeros(2, np.int32)
+    sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f = manifold_scratch()
     method = ctx[0].narrowphase
     k = 0
     for p in range(ns):
