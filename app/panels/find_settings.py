@@ -53,8 +53,10 @@ class FindSettings:
                 self.start()
             record(self.app, "find:start")
             if imgui.is_item_hovered():
-                imgui.set_tooltip("Search every solver mode for the fastest settings whose error on this "
-                                  "scene stays within the budget (runs in the background).")
+                imgui.set_tooltip("Search every solver mode for the fastest settings whose error on this\n"
+                                  "scene stays within the budget (in the background). It runs the scene\n"
+                                  "as last opened or saved (what Reset returns to: save to include body\n"
+                                  "edits) with the solver settings above, so those are its baseline.")
             self.outcome(f)
         self.app.ui_values["find"] = {"state": f.state, "progress": list(f.progress), "result": f.result,
                                       "error": f.error, "seconds": f.seconds, "applied": self.applied, "pid": f.pid,
@@ -139,7 +141,7 @@ class FindSettings:
         wrapped(GREEN, f"Choice: {c['key']}")
         speed = base["seconds"] / c["seconds"] if c["seconds"] > 0 else float("inf")
         wrapped(DIM, f"error {_number(c['error'], unit)} (budget {r['budget']:g}); {speed:.2g}x the speed "
-                f"of the settings now ({base['key']}: error {_number(base['error'], unit)}).")
+                f"of the settings now (their error {_number(base['error'], unit)}).")
         record(self.app, "find:choice")
         if imgui.is_item_hovered():
             imgui.set_tooltip(r["note"])

@@ -46,6 +46,19 @@ def press(app, key):
     return app.settle()
 
 
+def gone(pid, seconds) -> bool:
+    """Whether process ``pid`` exits (and is reaped by the sandbox) within ``seconds``; the
+    worker says "cancelled" just before its interpreter shuts down, which takes a moment."""
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < seconds:
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            return True
+        time.sleep(0.1)
+    return False
+
+
 def find(st):
     return st["ui_values"].get("find", {})
 
@@ -100,9 +113,7 @@ def test_find_settings_cancel_and_a_refusal(launch, tmp_path):
     assert find(st)["progress"][1] < find(st)["progress"][2]
     press(app, "find:cancel")
     st = app.wait(lambda s: find(s).get("state") == "cancelled", 15, "the search to stop")
-    time.sleep(0.5)
-    with pytest.raises(ProcessLookupError):  # the tuner process is gone (reaped), not left running
-        os.kill(pid, 0)
+    assert gone(pid, 5.0), "the tuner process still runs 5 s after the search said it stopped"
     st = app.frames(5)
     assert st["ui_values"]["solver_settings"] == before and find(st)["result"] is None
     assert any("cancelled" in m for m in st["messages"])
