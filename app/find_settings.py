@@ -65,9 +65,10 @@ class Finder:
         """Start a search (a running one is cancelled first); OSError if the process cannot start."""
         self.close()
         env = dict(os.environ)       # NUMBA_CACHE_DIR (set by physics._jit): the window's kernel cache
+        # stderr is the sandbox's own: a crash in the worker leaves its traceback in the log
         env["PYTHONPATH"] = os.pathsep.join(p for p in (str(ROOT), env.get("PYTHONPATH")) if p)
         proc = subprocess.Popen([sys.executable, "-m", "app.tune_worker"], cwd=ROOT, env=env, text=True,
-                                stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                                stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=None,
                                 bufsize=1)
         self.options = {"steps": steps, "metric": metric, "budget": budget}
         self.state, self.progress, self.result, self.error = "running", ("starting", 0, 0), None, ""
@@ -77,23 +78,31 @@ class Finder:
         threading.Thread(target=self._read, args=(proc,), name="find-settings-reader", daemon=True).start()
 
     def _read(self, proc) -> None:
-        for line in proc.stdout:
-            try:
-                rec = json.loads(line)
-            except ValueError:
-                continue
-            if "progress" in rec:
-                self.progress = tuple(rec["progress"])
-            elif "result" in rec:
-                self._finish("done", result=rec["result"])
-            elif "error" in rec:
-                self._finish("error", error=rec["error"])
-            elif "cancelled" in rec:
-                self._finish("cancelled")
+        try:
+            for line in proc.stdout:
+                if proc is not self._proc:     # a search replaced or closed: its last words are not ours
+                    break
+                self._record(line)
+        except (OSError, ValueError):          # close() closed the pipe under us
+            return
         proc.wait()
         if proc is self._proc and self.busy:   # it died without a word (killed, or crashed)
             self._finish("cancelled" if self.state == "cancelling" else "error",
                          error=f"the tuner process exited with code {proc.returncode}")
+
+    def _record(self, line) -> None:
+        try:
+            rec = json.loads(line)
+        except ValueError:
+            return
+        if "progress" in rec:
+            self.progress = tuple(rec["progress"])
+        elif "result" in rec:
+            self._finish("done", result=rec["result"])
+        elif "error" in rec:
+            self._finish("error", error=rec["error"])
+        elif "cancelled" in rec:
+            self._finish("cancelled")
 
     def _finish(self, state, result=None, error="") -> None:
         self.result, self.error = result, error

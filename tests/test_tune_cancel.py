@@ -118,3 +118,15 @@ def test_closing_stdin_cancels_the_worker():
     assert "progress" in json.loads(proc.stdout.readline())
     out, _ = proc.communicate(timeout=120)
     assert json.loads(out.splitlines()[-1]) == {"cancelled": True}
+
+
+def test_cancel_on_a_dask_local_cluster_stops_the_sweep():
+    """On Dask the check runs as each result arrives; the futures not yet done are cancelled."""
+    done = []
+    kw = {**KW, "scheduler": None}           # a LocalCluster (2 worker processes here)
+    with pytest.raises(Cancelled):
+        physics.tune(small_scene(), cancel=lambda: len(done) >= 3,
+                     on_progress=lambda stage, k, n: done.append((stage, k, n)) if k else None, **kw)
+    # the reference pair and one run of round one arrived; the check then stopped the search
+    assert [s for s, _, _ in done] == ["reference", "reference", "round 1"]
+    assert done[-1][1] < done[-1][2]
