@@ -38,12 +38,17 @@ class FindSettings:
         if not keep_camera:     # another scene (a reset keeps the scene, and the result)
             self.finder.discard()
 
-    def draw(self):
+    def tick(self):
+        """Every frame, the section open or not: kill an overrunning cancel, post a notice when a
+        search ends."""
         f = self.finder
         f.poll()
         if f.state != self._state:
             self._state = f.state
             self.changed(f)
+
+    def draw(self):
+        f = self.finder
         imgui.separator_text("Find settings")
         self.options(disabled=f.busy)
         if f.busy:
@@ -58,9 +63,10 @@ class FindSettings:
                                   "as last opened or saved (what Reset returns to: save to include body\n"
                                   "edits) with the solver settings above, so those are its baseline.")
             self.outcome(f)
-        self.app.ui_values["find"] = {"state": f.state, "progress": list(f.progress), "result": f.result,
-                                      "error": f.error, "seconds": f.seconds, "applied": self.applied, "pid": f.pid,
-                                      "options": {"metric": self.metric, "budget": self.budget, "steps": self.steps}}
+        self.app.ui_values["find"] = {
+            "state": f.state, "progress": list(f.progress), "result": f.result, "error": f.error,
+            "seconds": f.seconds, "applied": self.applied, "pid": f.pid,
+            "options": {"metric": self.metric, "budget": self.budget, "steps": self.steps}}
 
     def options(self, disabled):
         imgui.begin_disabled(disabled)

@@ -69,6 +69,7 @@ class Panels:
             progress_window(app)
             return
         self.main_window()
+        self.solver.find.tick()
         if self.show_stats:
             self.stats.draw()
         messages(app)
