@@ -79,5 +79,6 @@ class MainLoop:
             self.code = self.code or 3
         w.autosaver.end_session()
         w.warmup.close()
+        w.panels.close()
         w.close()
         return self.code

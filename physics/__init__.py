@@ -50,10 +50,11 @@ def solvers_available() -> list[str]:
 
 
 def tune(source, steps=600, metric="trajectory", budget=0.01, scheduler=None, modes=None, progress=True,
-         results=None, resume=False):
+         results=None, resume=False, cancel=None, on_progress=None):
     """The fastest solver mode and settings whose error on ``source`` (a World, scene data or a scene
     file) stays within ``budget`` over ``steps`` steps; see physics.tuning.search.tune (returns a
-    TuneResult: rows, front, choice, fragment; ValueError for a bad steps/metric/budget/scheduler)."""
+    TuneResult: rows, front, choice, fragment; ValueError for a bad steps/metric/budget/scheduler;
+    ``cancel``/``on_progress``: a stop check and a progress callback, physics.tuning.Cancelled)."""
     from .tuning import tune as _tune
     return _tune(source, steps=steps, metric=metric, budget=budget, scheduler=scheduler, modes=modes,
-                 progress=progress, results=results, resume=resume)
+                 progress=progress, results=results, resume=resume, cancel=cancel, on_progress=on_progress)

@@ -35,6 +35,7 @@ class Panels:
         self.sections = [cls(app) for cls in SECTIONS]
         self.tools = next(s for s in self.sections if isinstance(s, ToolsSection))
         self.scene = next(s for s in self.sections if isinstance(s, SceneSection))
+        self.solver = next(s for s in self.sections if isinstance(s, SolverSection))
         self.stats = StatsWindow(app)
         self.plot = PlotTab(app)
         self.context = ContextMenu(app)
@@ -51,6 +52,10 @@ class Panels:
             rects.append(stats_default_rect(width, height))
         return rects
 
+    def close(self):
+        """Stop what the panels run in the background (the Find settings search)."""
+        self.solver.find.finder.close()
+
     def focus_save_as(self):
         """Open the Scene section with the keyboard in its Save-as field (Ctrl+Shift+S)."""
         self.app.show_ui = True
@@ -64,6 +69,7 @@ class Panels:
             progress_window(app)
             return
         self.main_window()
+        self.solver.find.tick()
         if self.show_stats:
             self.stats.draw()
         messages(app)

@@ -8,6 +8,7 @@ from physics import options
 from .. import reliability
 
 from .base import Section, record
+from .find_settings import FindSettings
 from .style import DIM
 
 WORLD_CHOICES = (("integrator", "integrator", options.INTEGRATORS),
@@ -47,7 +48,12 @@ def setting_widget(label, decl, val):
 
 
 class SolverSection(Section):
+    """The mode, its settings and the world's other solver choices; then Find settings (the tuner)."""
     title = "Solver"
+
+    def __init__(self, app):
+        super().__init__(app)
+        self.find = FindSettings(app)
 
     def draw(self):
         app, ed = self.app, self.app.editor
@@ -83,6 +89,10 @@ class SolverSection(Section):
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(DIM, "stages: " + " > ".join(info["stages"]))
             imgui.pop_text_wrap_pos()
+        # what the settings are now (tests and scripts check an apply or an undo against it)
+        app.ui_values["solver_settings"] = {"solver": w.solver, "settings": w.settings.to_dict(),
+                                            "integrator": w.integrator, "dt": w.dt}
+        self.find.draw()
 
     def set_setting(self, w, name, value):
         mode = w.solver

@@ -15,5 +15,6 @@
 from .metrics import METRICS
 from .runs import Candidate
 from .search import TuneResult, tune
+from .sweep import Cancelled
 
-__all__ = ["tune", "TuneResult", "Candidate", "METRICS"]
+__all__ = ["tune", "TuneResult", "Candidate", "METRICS", "Cancelled"]

@@ -94,7 +94,8 @@ def stride_for(steps: int) -> int:
 
 
 def tune(source, steps: int = 600, metric: str = "trajectory", budget: float = 0.01, scheduler=None,
-         modes=None, progress: bool = True, results=None, resume: bool = False) -> TuneResult:
+         modes=None, progress: bool = True, results=None, resume: bool = False, cancel=None,
+         on_progress=None) -> TuneResult:
     """The fastest mode and settings for ``source`` (World, scene data or scene file) whose
     ``metric`` error over ``steps`` scene steps is <= ``budget`` (metres; energy_drift: a fraction).
 
@@ -102,6 +103,9 @@ def tune(source, steps: int = 600, metric: str = "trajectory", budget: float = 0
     modes to search (default all; the scene as it is always runs, as the speed baseline, and is
     chosen only if its mode is among them).  ``results``: a file that receives each finished run as
     it arrives (journal.py); with ``resume`` the runs already in it are not run again.
+    ``cancel``: a callable (e.g. ``threading.Event().is_set``) checked between runs; once it returns
+    True the search stops with sweep.Cancelled.  ``on_progress(stage, done, total)``: called as
+    runs finish (stage "reference", "round 1" or "round 2").
     ValueError names a bad steps, metric (``constraint`` on a scene without springs or joints),
     budget, modes, scheduler or results file; SceneError for a bad scene."""
     metric, budget, steps = check_metric(metric), check_budget(budget), check_steps(steps)
@@ -114,7 +118,7 @@ def tune(source, steps: int = 600, metric: str = "trajectory", budget: float = 0
     steps = max(stride, steps // stride * stride)
     journal = Journal(results, data, steps, stride, resume) if results is not None else None
     try:
-        with Sweep(scheduler, progress=progress) as sweep:
+        with Sweep(scheduler, progress=progress, cancel=cancel, on_progress=on_progress) as sweep:
             return _search(sweep, journal, data, steps, stride, metric, budget, modes)
     finally:
         if journal is not None:

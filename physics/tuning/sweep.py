@@ -15,6 +15,10 @@ from __future__ import annotations
 import os
 import sys
 
+class Cancelled(Exception):
+    """The sweep's ``cancel`` callable returned True: the sweep stopped between cases."""
+
+
 #: worker processes of a local cluster: one per core (each with one thread)
 LOCAL_WORKERS = max(1, os.cpu_count() or 1)
 CONNECT_SECONDS = 10
@@ -22,12 +26,20 @@ CONNECT_SECONDS = 10
 
 class Sweep:
     """A context manager that maps a function over cases on Dask (or inline); ValueError naming
-    ``scheduler`` if the address cannot be reached, ImportError if dask[distributed] is missing."""
+    ``scheduler`` if the address cannot be reached, ImportError if dask[distributed] is missing.
 
-    def __init__(self, scheduler: str | None = None, workers: int = LOCAL_WORKERS, progress: bool = True):
+    ``cancel``: a callable checked before each case and as each result arrives; once it returns
+    True, ``map`` raises Cancelled (Dask futures not yet finished are cancelled).  ``on_progress``:
+    called as ``on_progress(desc, done, total)`` when a map starts and after each case (the sandbox's
+    Find settings button shows these)."""
+
+    def __init__(self, scheduler: str | None = None, workers: int = LOCAL_WORKERS, progress: bool = True,
+                 cancel=None, on_progress=None):
         self.scheduler = scheduler
         self.workers = workers
         self.progress = progress
+        self.cancel = cancel
+        self.on_progress = on_progress
         self._client = self._cluster = None
 
     def __enter__(self):
@@ -82,6 +94,8 @@ class Sweep:
         bar = tqdm(total=len(cases), initial=len(cases) - len(todo), desc=desc, unit="case", file=sys.stderr,
                    disable=not (self.progress and sys.stderr.isatty()))
 
+        count = [len(cases) - len(todo)]
+
         def finished(i, result):
             out[i] = result
             if journal is not None:
@@ -89,16 +103,33 @@ class Sweep:
             if on_result is not None:
                 on_result(cases[i], result)
             bar.update()
+            count[0] += 1
+            self._report(desc, count[0], len(cases))
         try:
+            self._report(desc, count[0], len(cases))
             if self._client is None:
                 for i in todo:
+                    self._check()
                     finished(i, fn(cases[i], *args))
                 return out
             from dask.distributed import as_completed
             # pure=False: a case is timed, so an identical case must run again, not come from a cache
             futures = {self._client.submit(fn, cases[i], *args, pure=False): i for i in todo}
-            for fut in as_completed(list(futures)):
-                finished(futures[fut], fut.result())
+            try:
+                for fut in as_completed(list(futures)):
+                    self._check()
+                    finished(futures[fut], fut.result())
+            except Cancelled:
+                self._client.cancel(list(futures))
+                raise
             return out
         finally:
             bar.close()
+
+    def _check(self) -> None:
+        if self.cancel is not None and self.cancel():
+            raise Cancelled("the sweep was cancelled")
+
+    def _report(self, desc, done, total) -> None:
+        if self.on_progress is not None:
+            self.on_progress(desc, done, total)
