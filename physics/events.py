@@ -13,7 +13,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-LOW = 0xFFFFFFFF
+from .store.contacts import PAIR_LOW as LOW
 
 
 class ContactBeginEvent(NamedTuple):

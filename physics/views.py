@@ -6,6 +6,7 @@ from collections import namedtuple
 import numpy as np
 
 from .store import CIRCLE
+from .store.contacts import PAIR_LOW
 from .store.joints import BROKEN
 
 STATE_DTYPE = np.dtype([("id", np.int64), ("position", np.float64, (2,)), ("angle", np.float64),
@@ -89,7 +90,7 @@ def contacts(world) -> list:
                            [tuple(map(float, c.cur.point[k, p])) for p in keep],
                            tuple(map(float, c.cur.normal[k])),
                            max(float(c.cur.depth[k, p]) for p in keep),
-                           fixtures.get(key >> 32), fixtures.get(key & 0xFFFFFFFF),
+                           fixtures.get(key >> 32), fixtures.get(key & PAIR_LOW),
                            tuple(float(c.cur.jn[k, p]) * scale for p in keep),
                            tuple(float(c.cur.jt[k, p]) * scale for p in keep)))
     return out

@@ -38,7 +38,7 @@ import math
 
 import numpy as np
 
-from ..store import DYNAMIC, KINEMATIC
+from ..store import DYNAMIC
 from ..store.joints import BROKEN, MOTOR
 from .energy_sums import ELASTIC, EXTERNAL, KE, MASS, PE, PUSH, SUMS
 
@@ -47,12 +47,12 @@ PUSH_SPEED = 10.0
 
 
 def energies(world) -> tuple[float, float]:
-    """(total energy E, its scale S = KE + elastic + |gravitational|) of the world in J."""
+    """(total energy E, its scale S = KE + elastic + |gravitational|) of the world in J: the numpy
+    reference of what energy_sums.guard_sums computes inside the step (tests and tools use it)."""
     store = world._store
     n = store.bodies.n
     B = store.bodies.view
-    # the dynamic slots gathered by index once: the same arrays (and sums) as masking each
-    # column, at half the cost (it runs twice a step: Pipeline.step)
+    # the dynamic slots gathered by index once: the same arrays (and sums) as masking each column
     dyn = np.flatnonzero(B.kind[:n] == DYNAMIC)
     with np.errstate(all="ignore"):
         m = B.m[dyn]
@@ -72,7 +72,11 @@ def noise_floor(world, dt: float) -> float:
     store = world._store
     n = store.bodies.n
     B = store.bodies.view
-    mass = float(B.m[:n][B.kind[:n] == DYNAMIC].sum())
+    return floor_for(float(B.m[:n][B.kind[:n] == DYNAMIC].sum()), world, dt)
+
+
+def floor_for(mass: float, world, dt: float) -> float:
+    """The noise floor of ``mass`` kg of dynamic bodies in ``world`` after a step of ``dt`` (J)."""
     g = float(np.hypot(*world._gravity))
     return mass * (g * world.linear_slop + 0.5 * (g * dt) ** 2 + 0.5 * NOISE_SPEED ** 2)
 
@@ -89,20 +93,6 @@ def push_allowance(world) -> float:
     count = np.bincount(np.concatenate([C.a[:nc], C.b[:nc]]), minlength=n)[:n]
     dyn = B.kind[:n] == DYNAMIC
     return 0.5 * float((B.m[:n][dyn] * (count[dyn] * PUSH_SPEED) ** 2).sum())
-
-
-def external_input(world) -> bool:
-    """A user force or torque, a moving kinematic body or a working motor / mouse joint this step."""
-    store = world._store
-    n = store.bodies.n
-    B = store.bodies.view
-    # .any() is "some value != 0.0" (NaN included) without the comparison's temporary array
-    if B.f[:n].any() or B.tau[:n].any():
-        return True
-    kin = B.kind[:n] == KINEMATIC
-    if kin.any() and (B.v[:n][kin].any() or B.w[:n][kin].any()):
-        return True
-    return joints_working(world)
 
 
 def joints_working(world) -> bool:
@@ -157,8 +147,7 @@ class EnergyGuard:
             return None
         e, s = _scale(self.end)
         self.push = max(self.push, float(self.end[PUSH]))
-        g = float(np.hypot(*world._gravity))
-        floor = self.end[MASS] * (g * world.linear_slop + 0.5 * (g * dt) ** 2 + 0.5 * NOISE_SPEED ** 2)
+        floor = floor_for(self.end[MASS], world, dt)
         limit = self.e0 + world.energy_guard * (self.s0 + 0.5 * s) + self.push + floor
         # rounding: E sums terms of size up to S
         if e - limit > 1e-12 * (s + self.s0 + abs(self.e0)) + 1e-300:

@@ -75,8 +75,8 @@ class StepEvents:
         self.step = world.steps
         self.cache = {}
         if world._gone_fixtures:  # removed fixtures are named only by the ends of this step
-            named = set((np.concatenate([self.contacts.ends, self.sensors.ends]) >> 32).tolist()) \
-                | set((np.concatenate([self.contacts.ends, self.sensors.ends]) & LOW).tolist())
+            ends = np.concatenate([self.contacts.ends, self.sensors.ends])
+            named = set((ends >> 32).tolist()) | set((ends & LOW).tolist())
             world._gone_fixtures = {k: v for k, v in world._gone_fixtures.items() if k in named}
 
     def clear(self) -> None:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-LOW = 0xFFFFFFFF
+from ..store.contacts import PAIR_LOW as LOW
 
 
 class PairFilter:

@@ -9,8 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..store import DYNAMIC, STATIC
-
-LOW = 0xFFFFFFFF
+from ..store.contacts import PAIR_LOW as LOW
 
 
 def kept(world, keys: np.ndarray) -> np.ndarray:

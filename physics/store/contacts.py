@@ -51,6 +51,8 @@ CONTACT_FIELDS = {
 #: largest growth of the impulses' time span that ContactBuffer.adopt rescales (beyond: cold start);
 #: 4 covers soft_step -> sequential_impulse at the default 4 sub-steps
 MAX_SPAN_GROWTH = 4.0
+#: the low half of a fixture-pair key ((id_a << 32) | id_b): ``key & PAIR_LOW`` is id_b
+PAIR_LOW = 0xFFFFFFFF
 #: the per-point state the narrow phase carries from a step's rows to the next step's
 CARRIED = ("jn", "jt", "stick", "approach")
 
