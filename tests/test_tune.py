@@ -13,6 +13,20 @@ from physics.tuning import candidates as grid
 from physics.tuning import metrics, runs, sweep
 
 
+@pytest.fixture
+def counted(monkeypatch):
+    """The keys of the runs the tuner really ran, in order."""
+    from physics.tuning import search
+    calls = []
+    real = search.task
+
+    def counting(cand, *args):
+        calls.append(cand.key)
+        return real(cand, *args)
+    monkeypatch.setattr(search, "task", counting)
+    return calls
+
+
 def small_scene():
     """A box sliding on the ground and a bob on a spring: contacts, friction and a spring."""
     return {"format": "stelkropp.scene", "version": 1, "name": "small", "description": "kept by --apply",
@@ -136,16 +150,8 @@ def test_sweep_on_a_dask_local_cluster_matches_the_inline_run():
     assert local.choice["within"] and inline.choice["within"]  # which is fastest is a timing: may differ
 
 
-def test_results_stream_to_a_file_and_resume_runs_only_the_missing_cases(tmp_path, monkeypatch):
-    from physics.tuning import search
-    calls = []
-    real = search.task
-
-    def counting(cand, *args):
-        calls.append(cand.key)
-        return real(cand, *args)
-
-    monkeypatch.setattr(search, "task", counting)
+def test_results_stream_to_a_file_and_resume_runs_only_the_missing_cases(tmp_path, counted):
+    calls = counted
     kw = dict(steps=16, budget=0.05, modes=["soft_step"], scheduler="inline", progress=False)
     results = tmp_path / "runs.jsonl"
     first = physics.tune(small_scene(), results=results, **kw)

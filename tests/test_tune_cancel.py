@@ -9,25 +9,12 @@ from pathlib import Path
 import pytest
 
 import physics
-from physics.tuning import Cancelled, search
+from physics.tuning import Cancelled
 
-from test_tune import small_scene
+from test_tune import counted, small_scene  # noqa: F401 (counted: a fixture)
 
 ROOT = Path(__file__).resolve().parents[1]
 KW = dict(steps=16, budget=0.05, modes=["soft_step"], scheduler="inline", progress=False)
-
-
-@pytest.fixture
-def counted(monkeypatch):
-    """The keys of the runs the tuner really ran, in order."""
-    calls = []
-    real = search.task
-
-    def counting(cand, *args):
-        calls.append(cand.key)
-        return real(cand, *args)
-    monkeypatch.setattr(search, "task", counting)
-    return calls
 
 
 def test_cancel_stops_the_search_between_runs(counted):
