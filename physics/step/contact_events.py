@@ -7,7 +7,9 @@ speculative point that stopped an approach).  After each step one compiled pass
 new keys are begins (their row numbers kept), keys gone are ends, unless the pair only went
 to sleep (resting.py).  That is all a step pays; the Python events (physics/events.py) are
 made from these arrays, the contact rows and the checkpoint's start-of-step velocities only
-when ``world.contact_events()`` asks.
+when ``world.contact_events()`` asks.  The merge runs inside the step's closing kernel
+(frame.end_step): a kernel call of its own cost rain1000 ~17 us a step in dispatch and in
+reading again rows the solve had left; an accepted step then only swaps the buffers (take).
 """
 from __future__ import annotations
 
@@ -58,36 +60,43 @@ class ContactTracker:
     def __init__(self):
         self.keys = np.zeros(64, np.int64)
         self.n = 0
-        self._next = np.zeros(64, np.int64)
         self.begin = np.zeros(64, np.int64)
         self.nb = 0
         self._absent = np.zeros(64, np.int64)
         self.ends = self._absent[:0]
+        # end_step's merge writes into these spares and an accepted step swaps them in (take):
+        # a refused step leaves the last step's keys, begins and ends untouched
+        self._keys2 = np.zeros(64, np.int64)
+        self._begin2 = np.zeros(64, np.int64)
+        self._absent2 = np.zeros(64, np.int64)
 
-    def _ensure(self, n: int) -> None:
-        if n > len(self._next):
-            self._next = np.zeros(2 * n, np.int64)
-            self.begin = np.zeros(2 * n, np.int64)
-        if self.n > len(self._absent):
-            self._absent = np.zeros(2 * self.n, np.int64)
+    def scratch(self, nc: int):
+        """The merge's arguments for the ``nc`` rows (frame.end_step runs it, while the step's
+        last kernel has the rows at hand): last step's keys, their count, and the spare outputs."""
+        if nc > len(self._keys2):
+            self._keys2 = np.zeros(2 * nc, np.int64)
+        if nc > len(self._begin2):
+            self._begin2 = np.zeros(2 * nc, np.int64)
+        if self.n > len(self._absent2):
+            self._absent2 = np.zeros(2 * self.n, np.int64)
+        return self.keys, self.n, self._keys2, self._begin2, self._absent2
 
-    def update(self, world, slop: float) -> None:
-        """This step's touching pairs from the contact rows (after the solve)."""
-        c = world._store.contacts
-        cur = c.cur
-        self._ensure(c.n)
-        nt, self.nb, na = touch_update(cur.key, cur.count, cur.depth, cur.jn, c.n, slop, self.keys, self.n,
-                                       self._next, self.begin, self._absent)
-        self.keys, self._next, self.n = self._next, self.keys, int(nt)
+    def take(self, world, nt: int, nb: int, na: int) -> None:
+        """The accepted step's merge (its three counts) becomes this step's keys, begins, ends."""
+        self.keys, self._keys2 = self._keys2, self.keys
+        self.begin, self._begin2 = self._begin2, self.begin
+        self._absent, self._absent2 = self._absent2, self._absent
+        self.n, self.nb = nt, nb
         self.ends = self._absent[:na]
         if na:
             self._keep_sleeping(world)
 
     def _keep_sleeping(self, world) -> None:
         keep = kept(world, self.ends)
-        if keep.any():
-            self.keys = np.union1d(self.keys[:self.n], self.ends[keep])
-            self.n = len(self.keys)
+        if not keep.any():  # nothing sleeps (rain, a falling pile): every end stands
+            return
+        self.keys = np.union1d(self.keys[:self.n], self.ends[keep])
+        self.n = len(self.keys)
         self.ends = self.ends[~keep].copy()
 
     def idle(self) -> None:
@@ -105,4 +114,4 @@ class ContactTracker:
         self.keys = np.array(keys, np.int64)
         self.n = len(self.keys)
         self.nb = 0
-        self.ends = self._absent[:0]
+        self.ends = self.keys[:0]

@@ -4,7 +4,8 @@ The pipeline hands this stage the broad phase's pairs (:meth:`StepEvents.pairs`:
 filter, sensor pairs split off when the world has sensors, the user's pair filter when one
 is set) and calls :meth:`StepEvents.commit` once the step is accepted (a refused step leaves
 the sets as they were).  What a world pays per step: nothing for sensors it has not got or a
-filter it has not set; one compiled merge over its contact rows (contact_events.py).  The
+filter it has not set; one merge over its contact rows inside the step's closing kernel
+(contact_events.py).  The
 events of a step replace the previous step's (Box2D); a step skipped because every body
 sleeps has none.  physics/events.py makes the Python objects on demand.
 """
@@ -54,9 +55,10 @@ class StepEvents:
         if self._sensed:
             self.sensors.sense(ctx, store, self._ns)
 
-    def commit(self, world) -> None:
-        """The accepted step's touching and overlap sets, begins and ends (after the step count)."""
-        self.contacts.update(world, world.linear_slop)
+    def commit(self, world, nt: int, nb: int, na: int) -> None:
+        """The accepted step's touching and overlap sets, begins and ends (after the step count;
+        ``nt, nb, na``: the counts of the touching merge end_step ran, contact_events.py)."""
+        self.contacts.take(world, nt, nb, na)
         self._commit_sensors(world)
 
     def idle(self, world) -> None:

@@ -8,6 +8,7 @@ from __future__ import annotations
 from .._jit import kernel
 from ..geometry.transform import update_geometry
 from .checkpoint import count_nonfinite, save_state
+from .contact_events import touch_update
 from .energy_guard import PUSH_SPEED
 from .energy_sums import PUSH, guard_sums, push_sum
 
@@ -26,11 +27,15 @@ def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums):
 
 
 @kernel(_nrt=False)
-def end_step(ctx, B, S, bad, why, Ca, Cb, nc, count, sums):
+def end_step(ctx, B, S, bad, why, Ca, Cb, nc, count, sums, key, npts, depth, jn, prev, nprev, out, begin,
+             absent):
     """Count bodies whose state or energy is not finite (slots into ``bad``, the reason in
     ``why``: checkpoint.count_nonfinite); when all is finite, the energy guard's sums of the
     state the step ends in (with the push-out allowance of its ``nc`` contacts) into ``sums``,
-    and clear user forces."""
+    and clear user forces.  Then the touching merge of the ``nc`` rows (``key``, ``npts``,
+    ``depth``, ``jn``) with last step's keys ``prev[:nprev]`` into ``out``, ``begin``, ``absent``
+    (contact_events.touch_update; kept only if the step is accepted).  Returns the non-finite
+    count and the merge's three counts."""
     c = ctx[0]
     n = c.n
     k = count_nonfinite(B, n, S, c.ns, bad, why)
@@ -41,4 +46,5 @@ def end_step(ctx, B, S, bad, why, Ca, Cb, nc, count, sums):
             B.f[i, 0] = 0.0
             B.f[i, 1] = 0.0
             B.tau[i] = 0.0
-    return k
+    nt, nb, na = touch_update(key, npts, depth, jn, nc, c.slop, prev, nprev, out, begin, absent)
+    return k, nt, nb, na

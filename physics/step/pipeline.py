@@ -181,8 +181,10 @@ class Pipeline:
             world.fault = err
             raise err from exc
         C = store.contacts.cur
-        k = end_step(self.ctx.array, B, store.springs.view, ck.bad, ck.why, C.a, C.b, store.contacts.n,
-                     ck.count, guard.end)
+        nc = store.contacts.n
+        k, nt, nb, na = end_step(self.ctx.array, B, store.springs.view, ck.bad, ck.why, C.a, C.b, nc, ck.count,
+                                 guard.end, C.key, C.count, C.depth, C.jn,
+                                 *self.events.contacts.scratch(nc))
         if k:
             self._fail(world, ck.slots(k))
         gained = guard.excess(world, dt)
@@ -193,7 +195,7 @@ class Pipeline:
         world._time += dt
         world.steps += 1
         world.fault = None
-        self.events.commit(world)
+        self.events.commit(world, nt, nb, na)
 
     #: the stages that write the bodies' state (x, q, v, w); the others read it (collision) or
     #: only zero velocities (islands), so a non-finite state after the step is theirs

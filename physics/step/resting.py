@@ -8,8 +8,18 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._jit import kernel
 from ..store import DYNAMIC, STATIC
 from ..store.contacts import PAIR_LOW as LOW
+
+
+@kernel(_nrt=False)
+def any_asleep(awake, kind, nf):
+    """Is one of the ``nf`` fixtures on a sleeping dynamic body?  Stops at the first."""
+    for i in range(nf):
+        if awake[i] == 0 and kind[i] == DYNAMIC:
+            return True
+    return False
 
 
 def kept(world, keys: np.ndarray) -> np.ndarray:
@@ -20,8 +30,8 @@ def kept(world, keys: np.ndarray) -> np.ndarray:
     nf = world._store.fixtures.n
     out = np.zeros(len(keys), bool)
     # a pair skipped for sleeping has a sleeping dynamic body: without one (rain, a falling
-    # pile) that one vector test is all
-    if not len(keys) or not nf or not np.any((F.awake[:nf] == 0) & (F.kind[:nf] == DYNAMIC)):
+    # pile) one compiled scan is all (a numpy mask cost rain1000 11 us a step)
+    if not len(keys) or not nf or not any_asleep(F.awake, F.kind, nf):
         return out
     ids = F.id[:nf]
     top = int(ids.max())
