@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..._jit import kernel
+from ...constraints.colouring import colour_contacts
 from ...constraints.body_rows import (gather_bodies, integrate_row_positions, integrate_row_velocities,
                                       load_velocities, store_velocities)
 from ...constraints.contact_coloured import RELAX, SOLVE, WARM, coloured_pass
@@ -29,13 +30,19 @@ from .kernel import GLOBAL
 
 
 @kernel
-def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, order, slots, bstart, W, GA, GB):
-    """One step as kernel.soft_step; the contacts coloured (``order``, ``slots``, ``bstart``
-    from colouring.colour_contacts this step; ``W``, ``GA``, ``GB`` the blocks' scratch, SB
-    with a spare row at n + 1 for the padding lanes).  Returns the number of joints that broke."""
+def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, colour, order, bstart, force_overflow, W, GA,
+                       GB):
+    """One step as kernel.soft_step, the contacts coloured first (colouring.colour_contacts into
+    the scratch ``used``, ``colour``, ``order``, ``bstart``; ``W``, ``GA``, ``GB`` the blocks'
+    scratch, SB with a spare row at n + 1 for the padding lanes).  Returns the number of joints
+    that broke, or minus the slots needed when GA is too short (nothing changed: call again
+    with larger blocks; sized here, the colouring costs no extra call from Python)."""
     c = ctx[0]
     p = par[0]
     n = c.n
+    slots = colour_contacts(C.a, C.b, c.nc, B.inv_m, B.inv_i, n, used, colour, order, bstart, force_overflow)
+    if slots > len(GA):
+        return -slots
     h = p.h
     broken = 0
     if not p.warm_starting:

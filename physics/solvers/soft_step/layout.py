@@ -1,14 +1,14 @@
 """``soft_step``'s ``solver_layout`` "coloured": the per-step colouring and the scratch it needs.
 
-Each step, after the narrow phase, the manifolds are coloured (constraints/colouring.py) from
-Python, so the blocks' scratch can be sized to this step's slot count before the step kernel
-(coloured.py) runs; arrays grow by doubling and are reused.
+Each step, after the narrow phase, the step kernel (coloured.py) first colours the manifolds
+(constraints/colouring.py); when they need more slots than the blocks hold it returns before
+changing anything, and the blocks grow (doubling) for a second call.  Scratch is reused.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from ...constraints.colouring import COLOURS, LANES, colour_contacts
+from ...constraints.colouring import COLOURS, LANES
 from ...constraints.contact_wide import BLOCK_SIZE
 from .coloured import soft_step_coloured
 
@@ -29,8 +29,8 @@ class ColouredScratch:
         self.GA = np.zeros(slots, np.uint64)
         self.GB = np.zeros(slots, np.uint64)
 
-    def colour_step(self, store) -> int:
-        """Colour this step's manifolds; the number of slots they take."""
+    def ensure(self, store) -> None:
+        """The colouring's scratch large enough for this step's bodies and manifolds."""
         n = store.bodies.n
         nc = store.contacts.n
         if n > len(self.used):
@@ -40,17 +40,14 @@ class ColouredScratch:
         if nc > len(self.colour) or need > len(self.order):
             self.colour = np.zeros(2 * nc, np.int32)
             self.order = np.zeros(2 * need, np.int32)
-        B = store.bodies.view
-        C = store.contacts.cur
-        slots = colour_contacts(C.a, C.b, nc, B.inv_m, B.inv_i, n, self.used, self.colour, self.order,
-                                self.bstart, self.force_overflow)
-        if slots > len(self.GA):
-            self._wide(2 * slots)
-        return slots
 
     def step(self, ctx, par, store, R, SB, J, JW, JS) -> int:
-        """Colour, then run the step kernel; the number of joints that broke."""
-        slots = self.colour_step(store)
-        return soft_step_coloured(ctx.array, par.array, store.bodies.view, store.contacts.cur,
-                                  store.springs.view, R, SB, J, JW, JS, self.order, slots, self.bstart,
-                                  self.W, self.GA, self.GB)
+        """The step kernel (it colours first); the number of joints that broke."""
+        self.ensure(store)
+        while True:
+            out = soft_step_coloured(ctx.array, par.array, store.bodies.view, store.contacts.cur,
+                                     store.springs.view, R, SB, J, JW, JS, self.used, self.colour, self.order,
+                                     self.bstart, self.force_overflow, self.W, self.GA, self.GB)
+            if out >= 0:
+                return out
+            self._wide(2 * -out)  # more slots than the blocks hold: nothing was done yet
