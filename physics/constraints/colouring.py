@@ -29,8 +29,17 @@ LANES = 8                     # manifolds per block (contact_wide.py): each colo
 
 
 @kernel(inline="always")
-def _moves(inv_m, inv_i, i):
-    return inv_m[i] > 0.0 or inv_i[i] > 0.0
+def _lowest_free(taken, lo, hi):
+    """The lowest colour in lo..hi-1 not in the bit set ``taken``; OVERFLOW when none is."""
+    one = np.uint64(1)
+    free = ~taken & ((one << np.uint64(hi)) - one) & ~((one << np.uint64(lo)) - one)
+    if free == 0:
+        return OVERFLOW
+    c = 0
+    while free & one == 0:  # the lowest set bit (at most hi shifts)
+        free >>= one
+        c += 1
+    return c
 
 
 @kernel
@@ -52,23 +61,15 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
     for k in range(nc):
         a = ca[k]
         b = cb[k]
-        ma = _moves(inv_m, inv_i, a)
-        mb = _moves(inv_m, inv_i, b)
+        ma = inv_m[a] > 0.0 or inv_i[a] > 0.0  # moves (an array passed to an inlined helper
+        mb = inv_m[b] > 0.0 or inv_i[b] > 0.0  # would cost reference counting per manifold)
         c = OVERFLOW
         if force_overflow:
             pass
         elif ma and mb:
-            taken = used[a] | used[b]
-            for i in range(DYNAMIC_COLOURS):
-                if taken & (one << np.uint64(i)) == 0:
-                    c = i
-                    break
+            c = _lowest_free(used[a] | used[b], 0, DYNAMIC_COLOURS)
         elif ma or mb:
-            d = a if ma else b
-            for i in range(1, OVERFLOW):
-                if used[d] & (one << np.uint64(i)) == 0:
-                    c = i
-                    break
+            c = _lowest_free(used[a if ma else b], 1, OVERFLOW)
         else:
             c = 1  # two fixed bodies: nothing to conflict with (any colour would do)
         if c != OVERFLOW:

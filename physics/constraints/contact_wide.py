@@ -33,9 +33,6 @@ _M = 2 * PW
 NW = _M + 22
 BLOCK_SIZE = NW * LANES  # floats per block
 
-# (wide field, row field) of each point, and of the manifold, copied by pack / unpack
-_POINT = ((W_RNA, RNA), (W_RNB, RNB), (W_RTA, RTA), (W_RTB, RTB), (W_MN, MASS_N), (W_MT, MASS_T),
-          (W_SEP, SEP0), (W_MU, MU), (W_VN0, VN0), (W_MAXJ, MAXJ), (W_JN, JN), (W_JT, JT))
 
 
 def wide_arrays(slots: int, dtype=np.float64):
@@ -46,8 +43,10 @@ def wide_arrays(slots: int, dtype=np.float64):
 
 @kernel(inline="always")
 def _at(j, f):
-    """Index of field f of slot j."""
-    return (j // LANES * NW + f) * LANES + j % LANES
+    """Index of field f of slot j (j >= 0: unsigned arithmetic, no floor-division fix-ups)."""
+    u = np.uint64(j)
+    return np.int64((u // np.uint64(LANES) * np.uint64(NW) + np.uint64(f)) * np.uint64(LANES)
+                    + u % np.uint64(LANES))
 
 
 @kernel
@@ -55,9 +54,10 @@ def pack(C, R, SB, order, slots, pad_row, block_solver, W, GA, GB):
     """W, GA, GB (body row offsets into the flat SB: row * NB) for the slots 0..slots-1."""
     for j in range(slots):
         k = order[j]
+        o = _at(j, 0)  # field f of slot j at o + f * LANES
         if k < 0:
             for f in range(NW):
-                W[_at(j, f)] = 0.0
+                W[o + f * LANES] = 0.0
             GA[j] = pad_row * NB
             GB[j] = pad_row * NB
             continue
@@ -65,26 +65,43 @@ def pack(C, R, SB, order, slots, pad_row, block_solver, W, GA, GB):
         b = C.b[k]
         GA[j] = a * NB
         GB[j] = b * NB
+        cnt = C.count[k]
         for q in range(2):
-            for wf, rf in _POINT:
-                W[_at(j, q * PW + wf)] = R[k, q * PT + rf] if q < C.count[k] else 0.0
-        W[_at(j, W_NX)] = R[k, R_NX]
-        W[_at(j, W_NY)] = R[k, R_NY]
-        W[_at(j, W_K11)] = R[k, K11]
-        W[_at(j, W_K22)] = R[k, K22]
-        W[_at(j, W_K12)] = R[k, K12]
-        use = block_solver and C.count[k] == 2 and R[k, BLOCK] != 0.0
-        W[_at(j, W_INVDET)] = R[k, INV_DET] if use else 0.0
-        W[_at(j, W_BLOCK)] = 1.0 if use else 0.0
-        W[_at(j, W_RATE)] = R[k, SOFT]
-        W[_at(j, W_MSC)] = R[k, SOFT + 1]
-        W[_at(j, W_ISC)] = R[k, SOFT + 2]
-        W[_at(j, W_KE0)] = R[k, R_KE0]
-        W[_at(j, W_BOUNCY)] = 1.0 if C.e[k] != 0.0 else 0.0
-        W[_at(j, W_IMA)] = SB[a, IM]
-        W[_at(j, W_IMB)] = SB[b, IM]
-        W[_at(j, W_IIA)] = SB[a, II]
-        W[_at(j, W_IIB)] = SB[b, II]
+            po = o + q * PW * LANES
+            rq = q * PT
+            if q < cnt:
+                W[po + W_RNA * LANES] = R[k, rq + RNA]
+                W[po + W_RNB * LANES] = R[k, rq + RNB]
+                W[po + W_RTA * LANES] = R[k, rq + RTA]
+                W[po + W_RTB * LANES] = R[k, rq + RTB]
+                W[po + W_MN * LANES] = R[k, rq + MASS_N]
+                W[po + W_MT * LANES] = R[k, rq + MASS_T]
+                W[po + W_SEP * LANES] = R[k, rq + SEP0]
+                W[po + W_MU * LANES] = R[k, rq + MU]
+                W[po + W_VN0 * LANES] = R[k, rq + VN0]
+                W[po + W_MAXJ * LANES] = R[k, rq + MAXJ]
+                W[po + W_JN * LANES] = R[k, rq + JN]
+                W[po + W_JT * LANES] = R[k, rq + JT]
+            else:
+                for f in range(PW):
+                    W[po + f * LANES] = 0.0
+        W[o + W_NX * LANES] = R[k, R_NX]
+        W[o + W_NY * LANES] = R[k, R_NY]
+        W[o + W_K11 * LANES] = R[k, K11]
+        W[o + W_K22 * LANES] = R[k, K22]
+        W[o + W_K12 * LANES] = R[k, K12]
+        use = block_solver and cnt == 2 and R[k, BLOCK] != 0.0
+        W[o + W_INVDET * LANES] = R[k, INV_DET] if use else 0.0
+        W[o + W_BLOCK * LANES] = 1.0 if use else 0.0
+        W[o + W_RATE * LANES] = R[k, SOFT]
+        W[o + W_MSC * LANES] = R[k, SOFT + 1]
+        W[o + W_ISC * LANES] = R[k, SOFT + 2]
+        W[o + W_KE0 * LANES] = R[k, R_KE0]
+        W[o + W_BOUNCY * LANES] = 1.0 if C.e[k] != 0.0 else 0.0
+        W[o + W_IMA * LANES] = SB[a, IM]
+        W[o + W_IMB * LANES] = SB[b, IM]
+        W[o + W_IIA * LANES] = SB[a, II]
+        W[o + W_IIB * LANES] = SB[b, II]
 
 
 @kernel
