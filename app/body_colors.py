@@ -9,11 +9,13 @@ from .commands import Command
 
 
 def hex_to_rgb(hexstr: str) -> tuple:
+    """"#rrggbb" -> (r, g, b) in [0, 1]."""
     h = hexstr.lstrip("#")
     return tuple(int(h[i:i + 2], 16) / 255.0 for i in (0, 2, 4))
 
 
 def rgb_to_hex(rgb) -> str:
+    """(r, g, b) in [0, 1] -> "#rrggbb" (the scene file's form)."""
     return "#" + "".join(f"{min(255, max(0, round(float(v) * 255))):02x}" for v in rgb)
 
 

@@ -14,6 +14,7 @@ BASE = dict(major_version=3, minor_version=3, forward_compatible=True, double_bu
 
 
 def samples_wanted() -> int:
+    """The samples to ask for (STELKROPP_MSAA_SAMPLES, default 4; not a number: the default)."""
     raw = os.environ.get("STELKROPP_MSAA_SAMPLES", str(DEFAULT_SAMPLES))
     try:
         return max(0, int(raw))
@@ -22,10 +23,12 @@ def samples_wanted() -> int:
 
 
 def plain() -> pyglet.gl.Config:
+    """The config every GL 3.3 driver the sandbox runs on offers (the fallback)."""
     return pyglet.gl.Config(**BASE)
 
 
 def multisampled(samples: int) -> pyglet.gl.Config:
+    """The plain config with a multisampled framebuffer (smooth edges)."""
     return pyglet.gl.Config(**BASE, sample_buffers=1, samples=samples)
 
 

@@ -1,5 +1,6 @@
 """One readable time plot (implot): a labelled time axis whose tick labels keep 10 px apart
-(ticks.spaced_ticks), y ticks spaced so their labels never overlap, the legend outside the curves, and a readout of every series under the pointer."""
+(ticks.spaced_ticks), y ticks spaced so their labels never overlap, the legend outside the
+curves, and a readout of every series under the pointer."""
 from __future__ import annotations
 
 import math
