@@ -13,6 +13,7 @@ import pyglet
 from OpenGL import GL
 from physics import joint_params as jp
 
+from .body_colors import rgb_to_hex
 from .joint_specs import param_value
 from .scenes import scene_files, user_scenes_dir
 
@@ -36,7 +37,8 @@ def _bodies(app):
                     "screen": [float(sp[0]), float(app.height - sp[1])],
                     "shape": b.shape.kind, "density": b.density,
                     "vertices": 0 if isinstance(b.shape, physics.Circle) else len(b.shape.vertices),
-                    "fixtures": [f.shape.kind for f in b.fixtures], "mass": b.mass})
+                    "fixtures": [f.shape.kind for f in b.fixtures], "mass": b.mass,
+                    "color": None if app.editor.color_of(b) is None else rgb_to_hex(app.editor.color_of(b))})
     return out
 
 
@@ -91,7 +93,7 @@ def status(app) -> dict:
         "user_scenes": [str(p) for p in scene_files(user_scenes_dir())],
         "ui_values": app.ui_values, "awake": int(np.count_nonzero(w.state()["awake"])) if app.warmup.ready else 0,
         "speed": app.sim.speed, "hint": app.editor.hint_text(), "scene_keys": app.input.scene_keys,
-        "dt": w.dt,
+        "dt": w.dt, "gl_config": app.gl_config,
         "bound": {"lo": app.bound.lo.tolist(), "hi": app.bound.hi.tolist(), "enabled": app.bound.enabled,
                   "shown": app.bound.shown},
         "plots": [p.last for p in app.panels.stats.plots] if app.panels.show_stats else [],

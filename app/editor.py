@@ -8,6 +8,7 @@ import numpy as np
 
 import physics
 
+from .body_colors import SetColor, checked_rgb, from_metadata, to_metadata
 from .clipboard import Paste, copy_bodies, paste_offset, selected_bodies
 from .commands import Group, RemoveBodies, RemoveJoint, RemoveSpring, SetProperty, SetWorld
 from .document import Document
@@ -49,7 +50,7 @@ class Editor:
         self.tool_springs: set[int] = set()    # springs the tools made: not the user's
         self.tool_joints: set[int] = set()     # joints the tools made (the mouse drag's): not the user's
         self.tool_options = ToolOptions()
-        self.colors: dict = {}                 # Ref -> (r, g, b): bodies' own colours (the inspector)
+        self.colors = from_metadata(world, self.doc.refs)   # Ref -> (r, g, b): bodies' own colours
         self.snap = Snap()                     # grid and angle snapping (G)
         self.clipboard = None                  # what Ctrl+C copied (app.clipboard.copy_bodies)
         self.follow = None                     # Ref of the body the camera follows (L), or None
@@ -102,7 +103,10 @@ class Editor:
         self.follow = None
         places = self._color_places() if keep_camera else {}   # a reset keeps the colours by place
         self.doc = Document(world, path)
-        self.colors = {self.doc.refs.of(world.bodies[k]): c for k, c in places.items() if k < len(world.bodies)}
+        if keep_camera:
+            self.colors = {self.doc.refs.of(world.bodies[k]): c for k, c in places.items() if k < len(world.bodies)}
+        else:                                                  # the scene file's own colours
+            self.colors = from_metadata(world, self.doc.refs)
         self.tracers.reset(world, self.doc.refs, keep=keep_camera)   # a reset clears the trails
         self.lasers.reset(world, self.doc.refs, keep=keep_camera)    # a reset keeps the lasers
         for cb in self.on_document:
@@ -320,15 +324,14 @@ class Editor:
 
     def set_color(self, body, rgb):
         """Give ``body`` its own fill colour (r, g, b in [0, 1]; None: the palette's again).
-        ValueError names the field if a component is out of range."""
-        ref = self.refs.of(body)
-        if rgb is None:
-            self.colors.pop(ref, None)
-            return
-        rgb = tuple(float(v) for v in rgb)
-        if len(rgb) != 3 or not all(0.0 <= v <= 1.0 for v in rgb):
-            raise ValueError(f"colour: three components in [0, 1], got {rgb!r}")
-        self.colors[ref] = rgb
+        Undoable; ValueError names the field if a component is out of range."""
+        rgb = None if rgb is None else checked_rgb(rgb)
+        if rgb != self.colors.get(self.refs.of(body)):
+            self.execute(SetColor(self, body, rgb))
+
+    def sync_colors(self):
+        """Before a save: the colours go where the scene saver reads them (world.metadata)."""
+        to_metadata(self.world, self.colors)
 
     def color_of(self, body):
         return self.colors.get(self.refs.of(body))

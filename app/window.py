@@ -21,6 +21,7 @@ from .compare import Comparison
 from .compare_view import CompareView
 from .editor import Editor
 from .files import SceneFiles
+from .gl_config import create_window
 from .input import SceneInput
 from .notices import Notices
 from .probes import Recorder
@@ -46,9 +47,10 @@ class Sandbox(pyglet.window.Window):
 
     def __init__(self, scene=None, world=None, size=(1280, 800), position=None, paused=False,
                  autosave_interval=60.0, offer_autosave=True, vsync=False):
-        config = pyglet.gl.Config(major_version=3, minor_version=3, forward_compatible=True, double_buffer=True,
-                                  red_size=8, green_size=8, blue_size=8, alpha_size=8, depth_size=0)
-        super().__init__(size[0], size[1], "Stelkropp", resizable=True, config=config, vsync=vsync)
+        # 4x multisampled when the driver offers it, else the plain config (gl_config.py)
+        self.gl_config = create_window(lambda config: super(Sandbox, self).__init__(
+            size[0], size[1], "Stelkropp", resizable=True, config=config, vsync=vsync))
+        self.gl_config["samples"] = int(GL.glGetIntegerv(GL.GL_SAMPLES))   # what the framebuffer has
         if position is not None:
             self.set_location(*position)
         imgui_ctx = imgui.create_context()
@@ -200,6 +202,7 @@ class Sandbox(pyglet.window.Window):
         self.times.record(real_dt, physics=phys_ms, upload=upload_ms, draw=draw_ms, ui=ui_ms,
                           frame=(time.perf_counter() - t_start) * 1e3)
         if ready:
+            self.editor.sync_colors()     # the autosave keeps the bodies' colours too
             self.autosaver.tick(self.editor.doc, busy=self.editor.tools["select"].joint is not None)
         self._update_caption()
         if self.frame_no == 1:

@@ -1,5 +1,6 @@
-"""One readable time plot (implot): a labelled time axis, y ticks spaced so their labels never
-overlap, the legend outside the curves, and a readout of every series under the pointer."""
+"""One readable time plot (implot): a labelled time axis whose tick labels keep 10 px apart
+(ticks.spaced_ticks), y ticks spaced so their labels never overlap, the legend outside the
+curves, and a readout of every series under the pointer."""
 from __future__ import annotations
 
 import math
@@ -7,10 +8,13 @@ import math
 import numpy as np
 from imgui_bundle import imgui, implot
 
+from .ticks import spaced_ticks
+
 TICK_PX = 28.0      # at least this many pixels between y tick labels (the font is 13 px high)
 MIN_PLOT_H = 150.0   # rows of plots are at least this high (px)
 MIN_PLOT_W = 170.0
 MAX_POINTS = 120    # points per line: llvmpipe pays for every plotted segment
+Y_AXIS_PX = 70.0    # the frame's width minus its plot area's, until a frame has measured it
 
 
 def nice_ticks(lo: float, hi: float, max_ticks: int) -> np.ndarray:
@@ -61,6 +65,7 @@ class TimePlot:
         self.key = key          # imgui id suffix: plots of the same title in other windows differ
         self.always_legend = False   # a legend even for one series (its name is not the title)
         self.last: dict = {}
+        self.inset = Y_AXIS_PX  # frame width minus plot-area width, as the last frame measured it
 
     def draw(self, t, series, width, height, colors=None):
         """``t``: sample times (s, the newest 0); ``series``: [(label, values)] (NaN: no value
@@ -80,6 +85,7 @@ class TimePlot:
             return
         implot.setup_axes("time (s)", "", 0, 0)
         implot.setup_axis_limits(implot.ImAxis_.x1.value, float(t[0]), 0.0, implot.Cond_.always.value)
+        self.time_ticks(float(t[0]), 0.0, width)
         implot.setup_axis_limits(implot.ImAxis_.y1.value, float(ticks[0]), float(ticks[-1]), implot.Cond_.always.value)
         implot.setup_axis_ticks(implot.ImAxis_.y1.value, [float(v) for v in ticks])
         implot.setup_axis_format(implot.ImAxis_.y1.value, "%.3g")
@@ -95,9 +101,21 @@ class TimePlot:
             implot.plot_line(label, tx, np.ascontiguousarray(y[::k]), spec=spec)
         pos, size = implot.get_plot_pos(), implot.get_plot_size()
         self.last["rect"] = (pos.x, pos.y, pos.x + size.x, pos.y + size.y)
+        self.inset = width - size.x
         if implot.is_plot_hovered():
             self.hover(t, series)
         implot.end_plot()
+
+    def time_ticks(self, t0, t1, width):
+        """The time axis' ticks: the finest 1-2-5 step whose labels keep 10 px apart in the plot
+        area (as wide as the frame minus the last measured y-axis inset)."""
+        area_w = max(1.0, width - self.inset)
+        values, labels, step = spaced_ticks(t0, t1, area_w, lambda s: imgui.calc_text_size(s).x)
+        if values:
+            implot.setup_axis_ticks(implot.ImAxis_.x1.value, values, labels)
+        widths = [imgui.calc_text_size(s).x for s in labels]
+        self.last["x_ticks"] = {"values": values, "labels": labels, "widths": widths, "step": step,
+                                "t0": t0, "t1": t1}
 
     def hover(self, t, series):
         """A vertical line at the pointer's time and a tooltip with every series' value there."""

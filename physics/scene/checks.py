@@ -164,6 +164,9 @@ def _explain(err, path):
                        f"{'at least' if v == 'minItems' else 'at most'} {val}")]
     if v == "items" and val is False:
         return [(path, f"has {len(inst)} items; expected {len(err.schema.get('prefixItems', []))}")]
+    if v == "pattern":
+        like = err.schema.get("examples", [val])[0]
+        return [(path, f"must look like {json.dumps(like)} (pattern {val}); got {preview(inst)}")]
     if v == "minLength":
         return [(path, "must not be empty")]
     return [(path, f"{v}: {val!r} does not hold for {preview(inst)}")]

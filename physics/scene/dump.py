@@ -59,7 +59,7 @@ def _vec(v):
     return [float(v[0]), float(v[1])]
 
 
-def body_dict(world, body, name) -> dict:
+def body_dict(world, body, name, color=None) -> dict:
     B = world._bodies.view
     s = body._s
     out = {"name": name} if name is not None else {}
@@ -77,6 +77,8 @@ def body_dict(world, body, name) -> dict:
     _put(out, "restitution", float(B.e[s]), fmt.BODY_DEFAULTS["restitution"])
     mu_s, mu_d = float(B.mu_s[s]), float(B.mu_d[s])
     _put(out, "friction", mu_s if mu_s == mu_d else {"static": mu_s, "dynamic": mu_d}, fmt.BODY_DEFAULTS["friction"])
+    if color is not None:
+        out["color"] = color
     return out
 
 
@@ -131,7 +133,8 @@ def to_dict(world, meta: dict) -> dict:
     if meta.get("camera"):
         out["camera"] = meta["camera"]
     names = body_names(world)
-    out["bodies"] = [body_dict(world, b, names[b.id]) for b in world.bodies]
+    colors = meta.get("colors") or {}     # body id -> "#rrggbb" (the sandbox's, see load._build)
+    out["bodies"] = [body_dict(world, b, names[b.id], colors.get(b.id)) for b in world.bodies]
     out["springs"] = [spring_dict(world, sp, names) for sp in world.springs]
     if world.joints:
         out["joints"] = [joint_dict(world, j, names, _anchor, _same) for j in world.joints]

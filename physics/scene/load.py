@@ -67,13 +67,17 @@ def _build(data, shapes, source):
         _add_spring(world, sp, by_name, f"springs[{i}]", source)
     add_joints(world, data.get("joints", []), by_name, scene_error, source)
     world.metadata.update({k: data[k] for k in ("name", "description", "camera") if k in data})
+    # the sandbox's body colours are app data: kept beside the world, by body id, never in the core
+    colors = {handles[i].id: b["color"].lower() for i, b in enumerate(data["bodies"]) if "color" in b}
+    if colors:
+        world.metadata["colors"] = colors
     return world
 
 
 def _add_body(world, b, fixtures, path, source):
     """One body from its (shape, fixture fields) pairs: the body's material first, then each
     fixture's own fields (a fixture's density moves the centre of mass: set before stepping)."""
-    kw = {**fmt.BODY_DEFAULTS, **{k: v for k, v in b.items() if k not in ("shape", "shapes")}}
+    kw = {**fmt.BODY_DEFAULTS, **{k: v for k, v in b.items() if k not in ("shape", "shapes", "color")}}
     try:
         body = world.add_body([sh for sh, _ in fixtures], **kw)
         weighed = False

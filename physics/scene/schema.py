@@ -57,6 +57,8 @@ BODY_DEFAULTS = {
     "restitution": 0.0,
     "friction": 0.6,
 }
+#: a body's optional sandbox colour: "#rrggbb"
+COLOR_PATTERN = "^#[0-9a-fA-F]{6}$"
 # rest_length None: the distance between the anchors when the scene is built
 SPRING_DEFAULTS = {
     "name": None,
@@ -113,6 +115,9 @@ _BODY = {
         "restitution": _num("bounciness 0..1 (contacts take the larger of the two)", minimum=0, maximum=1,
                             default=BODY_DEFAULTS["restitution"]),
         "friction": {"$ref": "#/$defs/friction"},
+        "color": {"type": "string", "pattern": COLOR_PATTERN, "examples": ["#e07a5f"],
+                  "description": "fill colour in the sandbox, \"#rrggbb\" (ignored by the physics); "
+                                 "optional: a palette colour otherwise"},
     },
 }
 

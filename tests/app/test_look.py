@@ -2,6 +2,8 @@
 the state colours kept (selected, hovered, sleeping), and kept by a reset."""
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 
@@ -54,9 +56,55 @@ def test_own_colour_with_state_colours_kept(launch, tmp_path):
     # a reset keeps the colour (the body at the same place in the scene)
     app.xdo("mousemove", 700, 120)
     app.settle()
-    app.key("r")
+    app.key("r")                        # the colour is an edit of the scene: reset asks first
+    st = app.wait(lambda s: s["dialog"] == "Unsaved edits", 10, "the question")
+    st = app.settle()
+    app.click(*centre(st["ui_rects"]["dialog:Discard edits"]))
     st = app.wait(lambda s: s["time"] == 0.0 and not s["dirty"], 10, "the reset")
     st = app.settle()
     img = app.screenshot("after_reset")
     assert near(box_pixels(img, st, body(st, "a")), GREEN) > 0.8, "the reset lost a's colour"
+    assert not st["gl_errors"]
+
+
+CORAL = (224, 122, 95)     # "#e07a5f", the scene file's colour for b
+
+
+def test_scene_colours_load_undo_and_save(launch, tmp_path):
+    """A colour from the scene file is drawn; an inspector colour is undone and redone with
+    Ctrl+Z / Ctrl+Shift+Z; Ctrl+S writes both into the file as "#rrggbb"."""
+    path = tools_scene(tmp_path / "coloured.json")
+    data = json.loads(path.read_text())
+    data["bodies"][2]["color"] = "#e07a5f"
+    path.write_text(json.dumps(data))
+    app = launch(path, "--paused")
+    st = app.wait_ready(10)
+    a, b = body(st, "a"), body(st, "b")
+    assert b["color"] == "#e07a5f" and a["color"] is None
+    img = app.screenshot("loaded")
+    assert near(box_pixels(img, st, b), CORAL) > 0.8, "b is not drawn in the file's colour"
+    assert near(box_pixels(img, st, a), CORAL) < 0.05 and near(box_pixels(img, st, a), GREEN) < 0.05
+    app.click(*map(int, a["screen"]))
+    st = app.wait(lambda s: s["selection"] == [a["id"]], 10, "a selected")
+    st = app.settle()
+    app.click(*centre(st["ui_rects"]["inspector:swatch:3"]))
+    st = app.wait(lambda s: body(s, "a")["color"] == "#81b29a" and s["dirty"], 10, "a's colour set")
+    app.xdo("mousemove", 700, 120)
+    app.settle()
+    app.key("Escape")
+    st = app.wait(lambda s: not s["selection"], 10, "the selection cleared")
+    st = app.settle()
+    assert near(box_pixels(app.screenshot("green"), st, a), GREEN) > 0.8
+    app.key("ctrl+z")
+    st = app.wait(lambda s: body(s, "a")["color"] is None, 10, "the colour undone")
+    st = app.settle()
+    img = app.screenshot("undone")
+    assert near(box_pixels(img, st, a), GREEN) < 0.05, "the undo left a green"
+    assert near(box_pixels(img, st, b), CORAL) > 0.8, "the undo touched b"
+    app.key("ctrl+shift+z")
+    st = app.wait(lambda s: body(s, "a")["color"] == "#81b29a", 10, "the colour redone")
+    app.key("ctrl+s")
+    st = app.wait(lambda s: not s["dirty"], 10, "the save")
+    saved = {x["name"]: x.get("color") for x in json.loads(path.read_text())["bodies"]}
+    assert saved == {"ground": None, "a": "#81b29a", "b": "#e07a5f", "c": None}, saved
     assert not st["gl_errors"]

@@ -49,3 +49,39 @@ def test_plots_resize_have_spaced_ticks_and_a_hover_readout(launch):
     for p in st["plots"]:
         assert p["tick_px"] >= 26
     assert not st["gl_errors"]
+
+
+def label_runs(row_mask):
+    """Column runs of lit pixels, joined across gaps < 5 px (the space between a label's glyphs)."""
+    cols = np.flatnonzero(row_mask)
+    runs = []
+    for c in cols:
+        if runs and c - runs[-1][1] < 5:
+            runs[-1][1] = c
+        else:
+            runs.append([c, c])
+    return runs
+
+
+def test_time_axis_labels_keep_apart(launch):
+    """Item 9: the time axis' tick labels are on a 1-2-5 step and keep >= 10 px apart, in the
+    status (positions in the drawn plot area, widths from imgui) and on the screen."""
+    app = launch(ROOT / "scenes" / "pyramid.json")
+    st = app.wait_ready(60)
+    st = app.wait(lambda s: all(p.get("x_ticks", {}).get("t0", 0) < -2 for p in s["plots"]), 60, "2 s of samples")
+    img = app.screenshot("time_axis")
+    for p in st["plots"]:
+        xt, (x0, y0, x1, y1) = p["x_ticks"], p["rect"]
+        assert len(xt["values"]) >= 2, f"{p['title']}: fewer than two time ticks: {xt}"
+        m = xt["step"] / 10 ** np.floor(np.log10(xt["step"]) + 1e-9)
+        assert round(m, 6) in (1, 2, 5), xt["step"]
+        xs = [x0 + (v - xt["t0"]) / (xt["t1"] - xt["t0"]) * (x1 - x0) for v in xt["values"]]
+        gaps = [(xs[i + 1] - xt["widths"][i + 1] / 2) - (xs[i] + xt["widths"][i] / 2) for i in range(len(xs) - 1)]
+        assert min(gaps) >= 9.5, f"{p['title']}: time labels {min(gaps):.1f} px apart: {xt['labels']}"
+        # on the screen: the labels' row under the plot area, one run of lit pixels per label
+        # (those inside the plot's x range), each run >= 8 px from the next
+        strip = img[int(y1) + 6:int(y1) + 18, int(x0) - 12:int(x1) + 12]
+        runs = label_runs(strip.min(axis=2).max(axis=0) > 150)
+        assert len(runs) >= len(xt["values"]) - 1, f"{p['title']}: {len(runs)} label runs for {xt['labels']}"
+        assert all(b[0] - a[1] >= 8 for a, b in zip(runs, runs[1:])), f"{p['title']}: crowded {runs}"
+    assert not st["gl_errors"]
