@@ -29,7 +29,7 @@ from .paths import RESULTS
 from .report.suite_table import B1, B2, OURS, PM, table_md
 from .suite import NEEDS, SUITE
 from .suite.common import strip_box2d
-from .suite.scripts import Scripted, sleep_threshold
+from .suite.scripts import Scripted, sleep_threshold, starts_asleep
 from .timing import chunk_ratio, interleaved, median_ms
 
 def _ours(desc):
@@ -49,14 +49,16 @@ def _ours(desc):
     if (v := sleep_threshold(desc)) is not None:
         sim.world.sleep_linear = v  # Box2D's per-body sleepThreshold, the same on every body (rain)
     bench = desc.get("bench", {})
-    return Scripted(sim, desc) if bench.get("events") or bench.get("drives") else sim
+    return Scripted(sim, desc) if bench.get("events") or bench.get("drives") or starts_asleep(desc) else sim
 
 
 def _pymunk(desc):
-    """pymunk's adapter, refusing a scene with a script: it would time the scene without it."""
+    """pymunk's adapter, refusing a scene with a script or sleeping bodies: it would time another scene."""
     bench = desc.get("bench", {})
     if bench.get("events") or bench.get("drives"):
         raise NotImplementedError("the pymunk adapter does not run bench.events / bench.drives")
+    if starts_asleep(desc):
+        raise NotImplementedError("the pymunk adapter cannot create bodies asleep (box2d.awake = false)")
     return build("pymunk", desc)
 
 

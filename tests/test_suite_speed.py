@@ -9,7 +9,7 @@ import pytest
 import physics
 from bench.report.suite_table import B1, B2, OURS, PM, table_md
 from bench.suite import LACKS, NEEDS, SUITE
-from bench.suite.benchmarks import joint_grid, junkyard, large_pyramid
+from bench.suite.benchmarks import joint_grid, junkyard, large_pyramid, smash
 from bench.suite.common import body, box, scene
 from bench.suite.ragdoll import rain
 from bench.suite_speed import _ours, run_scene
@@ -49,6 +49,14 @@ def test_junkyard_pusher_is_driven_to_its_target_on_our_side():
     sim.before(1)  # from rest at x = 0: the velocity that reaches 60 sin(0.2 dt) in one step
     assert pusher.velocity[0] == pytest.approx(60.0 * math.sin(0.2 * dt) / dt, rel=1e-12)
     assert pusher.velocity[1] == 0.0 and pusher.angular_velocity == 0.0
+
+
+def test_smash_wall_starts_asleep_on_our_side_and_the_ram_moves():
+    sim = _ours(smash(columns=4, rows=3))
+    sim.step()  # the first step: resting islands fall asleep, the ram is woken with its velocity
+    ram, wall = sim.world.bodies[0], sim.world.bodies[1:]
+    assert ram.awake and ram.velocity == (40.0, 0.0) and not any(b.awake for b in wall)
+    assert sim.world.time_to_sleep == 0.5
 
 
 def test_every_suite_scene_says_how_it_differs():

@@ -118,7 +118,9 @@ def _suite_md(res, rel):
             "(`python -m bench.suite_speed`; `x Box2D 1T` is ours / Box2D's one-thread time per chunk). "
             "Every scene is built from the same description in both engines; `bench.events` (rain's ragdolls, "
             "added and removed inside the timed loop) and `bench.drives` (junkyard's pusher) run on both sides "
-            "(`bench/suite/scripts.py` for ours); `status` says how a scene still differs (`bench.suite.NEEDS`) "
+            "(`bench/suite/scripts.py` for ours: rain's ragdolls are created through the world's Python calls, "
+            "Box2D's in C, and both costs count); smash's wall, created asleep in Box2D, is put to sleep on our "
+            "side by the untimed first step; `status` says how a scene still differs (`bench.suite.NEEDS`) "
             "and why pymunk sits one out. " + _suite_steps(rows), "",
             *table_md(rows), "", "![suite](../bench/results/box2d_suite.png)", ""]
 
