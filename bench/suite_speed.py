@@ -5,8 +5,10 @@ that Stelkropp can build runs in Stelkropp (soft_step defaults), Box2D v3 with o
 with two, and pymunk where its adapter can build the scene, interleaved chunk by chunk exactly
 as ``python -m bench`` times its own scenes (bench/timing.py): ms/step is the median over the
 timed chunks, a ratio the median of the per-chunk ratios, the first step (compile) apart.
-A scene an engine cannot build is reported with the reason (``bench.suite.NEEDS`` lists what
-each scene needs from the shapes and joints issues), never silently dropped.
+A scene's ``bench`` script (rain's ragdoll events, junkyard's pusher drive) runs on our side
+too (bench/suite/scripts.py), as Box2D's side runs it; pymunk's adapter has no scripts and sits
+those scenes out. A scene an engine cannot build is reported with the reason, never silently
+dropped; ``bench.suite.NEEDS`` says how each scene still differs from Box2D's.
 
     python -m bench.suite_speed                          # every scene, the suite's step counts
     python -m bench.suite_speed --scenes large_pyramid --steps 200 --out /tmp/suite
@@ -27,6 +29,7 @@ from .paths import RESULTS
 from .report.suite_table import B1, B2, OURS, PM, table_md
 from .suite import NEEDS, SUITE
 from .suite.common import strip_box2d
+from .suite.scripts import Scripted, sleep_threshold, starts_asleep
 from .timing import chunk_ratio, interleaved, median_ms
 
 def _ours(desc):
@@ -43,7 +46,20 @@ def _ours(desc):
         world = None  # a loader without version 2: the scene uses only version-1 bodies
     sim = OursSim(desc, world=world)
     sim.world.solver = "soft_step"
-    return sim
+    if (v := sleep_threshold(desc)) is not None:
+        sim.world.sleep_linear = v  # Box2D's per-body sleepThreshold, the same on every body (rain)
+    bench = desc.get("bench", {})
+    return Scripted(sim, desc) if bench.get("events") or bench.get("drives") or starts_asleep(desc) else sim
+
+
+def _pymunk(desc):
+    """pymunk's adapter, refusing a scene with a script or sleeping bodies: it would time another scene."""
+    bench = desc.get("bench", {})
+    if bench.get("events") or bench.get("drives"):
+        raise NotImplementedError("the pymunk adapter does not run bench.events / bench.drives")
+    if starts_asleep(desc):
+        raise NotImplementedError("the pymunk adapter cannot create bodies asleep (box2d.awake = false)")
+    return build("pymunk", desc)
 
 
 def _sims(desc):
@@ -51,7 +67,7 @@ def _sims(desc):
     makers = {OURS: lambda: _ours(desc),
               B1: lambda: build("box2d_v3", desc, threads=1, sleeping=None, track_angles=False),
               B2: lambda: build("box2d_v3", desc, threads=2, sleeping=None, track_angles=False),
-              PM: lambda: build("pymunk", desc)}
+              PM: lambda: _pymunk(desc)}
     sims, why = {}, {}
     for label, make in makers.items():
         try:
@@ -66,7 +82,10 @@ def run_scene(name, steps=None, chunk=10, warm=20, budget_s=None, desc=None) -> 
     ``desc``: the scene built with other parameters (tests: smaller), default ``SUITE[name]()``."""
     desc = desc if desc is not None else SUITE[name]()
     n = int(steps or desc.get("bench", {}).get("steps", 300))
+    if desc.get("bench", {}).get("events"):  # a short run: the events it reaches (both sides pre-translate them)
+        desc = {**desc, "bench": {**desc["bench"], "events": [e for e in desc["bench"]["events"] if e["step"] < n]}}
     row = {"scene": name, "bodies": len(desc["bodies"]), "steps": n, "needs": NEEDS.get(name, []),
+           "suite_steps": desc.get("bench", {}).get("steps"),
            "source": desc.get("bench", {}).get("source")}
     sims, why = _sims(desc)
     row["not_built"] = why
@@ -77,6 +96,7 @@ def run_scene(name, steps=None, chunk=10, warm=20, budget_s=None, desc=None) -> 
     row.update(steps_done=done, status=err or "ok",
                first_step_s={k: round(v, 3) for k, v in first.items()},
                ms_step={k: median_ms(c) for k, c in chunks.items()})
+    row["bodies_end"] = len(sims[OURS].world.bodies)  # rain: the ragdolls its events added
     row["ratio"] = {k: chunk_ratio(chunks[OURS], c) for k, c in chunks.items() if k != OURS}
     if B1 in chunks and B2 in chunks:
         row["box2d_two_thread_speedup"] = chunk_ratio(chunks[B1], chunks[B2])

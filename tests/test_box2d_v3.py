@@ -189,7 +189,7 @@ BENCHMARKS_C = {"large_pyramid": (5051, 5051, 0), "many_pyramids": (22001, 22020
                 "compounds": (3001, 6282, 0), "rain": (1, 2505, 0)}
 
 
-@pytest.mark.parametrize("name", ["tumbler", "spinner", "washer", "compounds", "rain", "large_pyramid"])
+@pytest.mark.parametrize("name", sorted(SUITE))
 def test_suite_scenes_build_what_benchmarks_c_builds(name):
     sim = Box2DV3Sim(SUITE[name](), sleeping=None)
     c = sim.counters()

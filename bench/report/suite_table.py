@@ -7,6 +7,12 @@ from .tables import fmt
 OURS, B1, B2, PM = "stelkropp", "box2d_v3 1 thread", "box2d_v3 2 threads", "pymunk"
 
 
+def _bodies(r) -> str:
+    """Bodies at the start, and at the end when a script changed them (rain: "1->1101")."""
+    end = r.get("bodies_end")
+    return f"{r['bodies']}->{end}" if end is not None and end != r["bodies"] else str(r["bodies"])
+
+
 def table_md(rows) -> list[str]:
     """Markdown lines: one row per scene, ms/step per engine and our ratio to each."""
     hdr = ["scene", "bodies", "steps", "stelkropp ms", "Box2D v3 1T ms", "Box2D v3 2T ms", "pymunk ms",
@@ -16,8 +22,12 @@ def table_md(rows) -> list[str]:
         ms, ra = r.get("ms_step", {}), r.get("ratio", {})
         st = r["status"]
         if st == "stelkropp cannot build it yet":
-            st = "not built: " + ("; ".join(r["needs"]) or r["not_built"].get(OURS, ""))
+            st = "not built: " + (r["not_built"].get(OURS, "") or "; ".join(r["needs"]))
+        elif r.get("needs"):
+            st += "; differs: " + "; ".join(r["needs"])
+        if r.get("not_built", {}).get(PM):
+            st += "; no pymunk: " + r["not_built"][PM].split(": ", 1)[-1]
         L.append("| " + " | ".join(str(x) for x in [
-            r["scene"], r["bodies"], r.get("steps_done", "-"), fmt(ms.get(OURS)), fmt(ms.get(B1)), fmt(ms.get(B2)),
+            r["scene"], _bodies(r), r.get("steps_done", "-"), fmt(ms.get(OURS)), fmt(ms.get(B1)), fmt(ms.get(B2)),
             fmt(ms.get(PM)), fmt(ra.get(B1), 2), fmt(ra.get(B2), 2), fmt(ra.get(PM), 2), st]) + " |")
     return L

@@ -3,8 +3,9 @@
 Each builder returns a scene dict with the same bodies, shapes, joints, materials, world settings
 (sleeping on wherever ``benchmarks.c`` leaves Box2D's default on) and step count
 (``bench.steps``, from ``benchmark/main.c``) as the C function it names. The ragdoll ``rain`` is
-in ``ragdoll.py``. Shapes Stelkropp does not have yet (capsules, segments, chains, rounded boxes,
-several shapes per body) and joints are written in the version-2 keys of issues 13 and 14.
+in ``ragdoll.py``. Capsules, segments, chains, rounded boxes, several shapes per body and joints
+are written in the version-2 keys of issues 13 and 14; ``NEEDS`` (``__init__.py``) says what still
+differs.
 """
 from __future__ import annotations
 
