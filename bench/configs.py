@@ -26,7 +26,8 @@ class Config:
 # one setting changed at a time from each mode's defaults
 SWEEPS = {
     "soft_step": [{"substeps": 1}, {"substeps": 2}, {"substeps": 8}, {"iterations": 2}, {"relax": False},
-                  {"warm_starting": False}, {"block_solver": False}],
+                  {"warm_starting": False}, {"block_solver": False},
+                  {"solver_layout": "coloured"}],  # issue 17: the coloured, vectorised contact solve
     "sequential_impulse": [{"velocity_iterations": 4}, {"velocity_iterations": 16}, {"velocity_iterations": 32},
                            {"position_correction": "baumgarte"}, {"warm_starting": False}, {"block_solver": False}],
     "impulse": [{"iterations": 5}, {"iterations": 20}, {"projection": "nonlinear"}, {"projection": "none"}],

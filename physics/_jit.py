@@ -67,3 +67,51 @@ def kernel(fn=None, **kw):
     if fn is None:
         return lambda f: _njit(**opts)(f)
     return _njit(**opts)(fn)
+
+
+# -- noalias kernels ----------------------------------------------------------------------------
+# LLVM vectorises a loop over several arrays only when it may assume they do not overlap; numba
+# has no public switch for that, so a dispatcher whose target options set ``flags.noalias``
+# (numba internals, checked against numba 0.68: tests/test_coloured_solve.py greps the machine
+# code for vector instructions, so a numba that drops the flag fails there, not silently).
+# Measured on the coloured contact solve: ~2x per manifold (../shared/notes/solver-speed.md).
+from numba.core import cpu as _cpu  # noqa: E402
+from numba.core.registry import CPUDispatcher as _CPUDispatcher, CPUTarget as _CPUTarget  # noqa: E402
+from numba.core.registry import cpu_target as _cpu_target  # noqa: E402
+
+
+class _NoAliasOptions(_cpu.CPUTargetOptions):
+    def finalize(self, flags, options):
+        super().finalize(flags, options)
+        flags.noalias = True
+
+
+class _NoAliasTarget(_CPUTarget):
+    options = _NoAliasOptions
+
+    @property
+    def target_context(self):  # numba's own CPU contexts: the kernels mix with every other
+        return _cpu_target.target_context
+
+    @property
+    def typing_context(self):
+        return _cpu_target.typing_context
+
+
+class _NoAliasDispatcher(_CPUDispatcher):
+    targetdescr = _NoAliasTarget("cpu")
+
+
+def kernel_noalias(fn=None, **kw):
+    """``@kernel_noalias``: as ``@kernel``, and every array argument is promised to share no
+    memory with any other (the caller's duty: pass distinct arrays only)."""
+    opts = dict(nogil=True, nopython=True)
+    opts.update(kw)
+    cache = opts.pop("cache", True)  # a decorator option (njit's), not a target option
+
+    def wrap(f):
+        disp = _NoAliasDispatcher(f, targetoptions=opts)
+        if cache:
+            disp.enable_caching()
+        return disp
+    return wrap if fn is None else wrap(fn)

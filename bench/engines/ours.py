@@ -5,6 +5,7 @@ import numpy as np
 
 from ..desc import body_records
 from .base import Sim
+from .ours_joints import readouts
 
 
 class OursSim(Sim):
@@ -43,6 +44,12 @@ class OursSim(Sim):
         """One ``world.step()``."""
         self.world.step()
 
+    def joint_readouts(self):
+        """Per joint slot (springs, then joints): force (n,2) N and torque (n,) N m, linear and
+        angular separation (m, rad), value, rate, motor, valid, as ``Box2DV3Sim.joint_readouts``
+        reports them (bench/engines/ours_joints.py)."""
+        return readouts(self.world)
+
     def state(self):
         """(com, angle, v, w) from ``world.state()`` (body order = description order: the
         benchmark never removes bodies)."""
@@ -67,16 +74,53 @@ def build_ours_world(desc):
                           sleeping=bool(w.get("sleeping", True)), settings=w.get("settings") or None)
     handles = {}
     for i, (b, r) in enumerate(zip(desc["bodies"], body_records(desc))):
-        h = world.add_body(r["shape"], kind=r["kind"], position=r["position"], angle=r["angle"],
-                           velocity=r["velocity"], angular_velocity=r["angular_velocity"], density=r["density"],
-                           restitution=r["restitution"], friction=(r["mu_s"], r["mu_d"]))
-        handles[b.get("name", i)] = h
+        handles[b.get("name", i)] = _add_record(world, r)
     for s in desc.get("springs", []):
         world.add_spring(handles[s["a"]], None if s.get("b") is None else handles[s["b"]],
                          anchor_a=tuple(s.get("anchor_a", (0, 0))), anchor_b=tuple(s.get("anchor_b", (0, 0))),
                          stiffness=float(s.get("stiffness", 100.0)), damping=float(s.get("damping", 0.0)),
                          rest_length=s.get("rest_length"))
+    for j in desc.get("joints", []):
+        _add_joint(world, j, handles)
     return world
+
+
+def _add_joint(world, j, handles):
+    """One scene-format joint (its keys are ``World.add_joint``'s keywords; Box2D-only ``box2d``
+    tuning is not Stelkropp's and is left out)."""
+    kw = {k: tuple(v) if isinstance(v, list) else v for k, v in j.items() if k not in ("kind", "a", "b", "box2d")}
+    b = j.get("b")
+    return world.add_joint(j["kind"], handles[j["a"]], None if b is None else handles[b], **kw)
+
+
+def _add_record(world, r):
+    """One body from a normalised record (bench/desc.py ``body_records``): its one shape, or every
+    fixture of its ``parts`` (several shapes, a chain's segments, a capsule, a rounded box) with
+    each part's own density, friction and restitution, as the scene loader builds it."""
+    pose = dict(kind=r["kind"], position=r["position"], angle=r["angle"], velocity=r["velocity"],
+                angular_velocity=r["angular_velocity"])
+    if not r["parts"]:
+        return world.add_body(r["shape"], **pose, density=r["density"], restitution=r["restitution"],
+                              friction=(r["mu_s"], r["mu_d"]))
+    (first, m), rest = r["parts"][0], r["parts"][1:]
+    body = world.add_body(first, **pose, density=m["density"], restitution=m["restitution"],
+                          friction=(m["mu_s"], m["mu_d"]))
+    for shape, m in rest:  # add_fixture keeps the body origin; mass and centre follow
+        body.add_fixture(shape, density=m["density"], friction=(m["mu_s"], m["mu_d"]), restitution=m["restitution"])
+    return body
+
+
+def scene_world(desc, source=None):
+    """The world the scene loader (``physics.scene.scene_from_dict``) builds from a bench suite
+    description: its real shapes (segments, capsules, rounded polygons, several per body) and
+    joints; the Box2D-only ``box2d`` keys and the bench's ``bench`` script are dropped first.
+    SceneError when the loader refuses it (never a stand-in scene)."""
+    from physics.scene import scene_from_dict
+
+    from ..suite.common import strip_box2d
+    data = strip_box2d(desc)
+    data.pop("bench", None)
+    return scene_from_dict(data, source=source or f"bench description {desc.get('name')!r}")
 
 
 def loaded_world(data, source):

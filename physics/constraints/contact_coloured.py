@@ -1,0 +1,261 @@
+"""The soft contact passes, colour by colour over the wide layout (Box2D v3's
+b2SolveContactTwoPoints / b2WarmStartContactsTask over b2ContactConstraintWide).
+
+The same model as constraints/contact_soft.py, term for term (soft normal rows with bias,
+speculative rows, the 2x2 block solver of constraints/block.py, Coulomb friction, the
+first-touch speeds, largest impulses and pair energy restitution needs), on the blocks of
+constraints/contact_wide.py.  Within a colour no two manifolds share a moving body
+(constraints/colouring.py), so the LANES manifolds of a block are solved side by side: the lane
+loop gathers both bodies' state, solves and leaves the new velocities in the block, and a
+second, scalar loop scatters them back.  For the lane loop to become vector code it must be
+straight-line: the block solver's four cases and the sequential fallback are both computed and
+the answer selected (branches on data would stop LLVM), array arguments are noalias
+(_jit.kernel_noalias) and the loops run from 0 over per-colour slices (a ``range(s, e)`` index
+keeps numba's negative-index wraparound in the address, which blocks vectorising).  Measured
+in ../shared/notes/solver-speed.md: ~10 ns per manifold and pass against ~28 for the row solve.
+
+The order differs from the row solve (colour by colour instead of table order), so the results
+differ from it by Gauss-Seidel's order dependence, not by the model.  A fixed body (inverse mass
+and inertia zero) may appear in several lanes of one colour: every lane writes back its
+unchanged velocity, so the writes agree.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .._jit import kernel, kernel_noalias
+from .body_rows import DCOS as _DC, DPX as _DX, DPY as _DY, DSIN as _DS, VX as _VX, VY as _VY, W as _W
+from .colouring import COLOURS, LANES
+from .contact_wide import (BLOCK_SIZE, PW, W_BLOCK, W_BOUNCY, W_IIA, W_IIB, W_IMA, W_IMB, W_INVDET, W_ISC, W_JN,
+                           W_JT, W_K11, W_K12, W_K22, W_KE0, W_MAXJ, W_MN, W_MSC, W_MT, W_MU, W_NX, W_NY, W_RATE,
+                           W_RNA, W_RNB, W_RTA, W_RTB, W_SEP, W_VAX, W_VAY, W_VBX, W_VBY, W_VN0, W_WA, W_WB)
+
+# body row offsets as uint64: an unsigned index has no negative-index wraparound code and
+# uint64 + int64 would be float64 in numba
+VX, VY, W, DPX, DPY, DCOS, DSIN = (np.uint64(f) for f in (_VX, _VY, _W, _DX, _DY, _DC, _DS))
+L = LANES
+P1 = PW * L  # offset of the second point's fields
+
+
+@kernel(inline="always")
+def _energy(vx, vy, w, im, ii):
+    """Kinetic energy of a body (0 for a fixed one), as contact_soft._energy, without branches."""
+    e = 0.5 * (vx * vx + vy * vy) / im if im > 0.0 else 0.0
+    return e + (0.5 * w * w / ii if ii > 0.0 else 0.0)
+
+
+@kernel(inline="always")
+def _scatter(blk, W_, GA, GB, S):
+    """The new velocities of block ``blk``'s bodies back into the body rows (scalar stores),
+    before the next block reads them (an overflow colour's blocks may share bodies)."""
+    o = blk * BLOCK_SIZE
+    for l in range(L):
+        i = o + l
+        a = GA[blk * L + l]
+        b = GB[blk * L + l]
+        S[a + VX] = W_[i + W_VAX * L]
+        S[a + VY] = W_[i + W_VAY * L]
+        S[a + W] = W_[i + W_WA * L]
+        S[b + VX] = W_[i + W_VBX * L]
+        S[b + VY] = W_[i + W_VBY * L]
+        S[b + W] = W_[i + W_WB * L]
+
+
+@kernel_noalias
+def warm_colour(nb, W_, GA, GB, S):
+    """Warm start of ``nb`` blocks: every point's accumulated impulses applied."""
+    for blk in range(nb):
+        o = blk * BLOCK_SIZE
+        for l in range(L):
+            i = o + l
+            a = GA[blk * L + l]
+            b = GB[blk * L + l]
+            nx = W_[i + W_NX * L]
+            ny = W_[i + W_NY * L]
+            jn0 = W_[i + W_JN * L]
+            jt0 = W_[i + W_JT * L]
+            jn1 = W_[i + P1 + W_JN * L]
+            jt1 = W_[i + P1 + W_JT * L]
+            px = (jn0 * nx - jt0 * ny) + (jn1 * nx - jt1 * ny)
+            py = (jn0 * ny + jt0 * nx) + (jn1 * ny + jt1 * nx)
+            aa = (jn0 * W_[i + W_RNA * L] + jt0 * W_[i + W_RTA * L]) + \
+                (jn1 * W_[i + P1 + W_RNA * L] + jt1 * W_[i + P1 + W_RTA * L])
+            ab = (jn0 * W_[i + W_RNB * L] + jt0 * W_[i + W_RTB * L]) + \
+                (jn1 * W_[i + P1 + W_RNB * L] + jt1 * W_[i + P1 + W_RTB * L])
+            ima = W_[i + W_IMA * L]
+            imb = W_[i + W_IMB * L]
+            W_[i + W_VAX * L] = S[a + VX] - ima * px
+            W_[i + W_VAY * L] = S[a + VY] - ima * py
+            W_[i + W_WA * L] = S[a + W] - W_[i + W_IIA * L] * aa
+            W_[i + W_VBX * L] = S[b + VX] + imb * px
+            W_[i + W_VBY * L] = S[b + VY] + imb * py
+            W_[i + W_WB * L] = S[b + W] + W_[i + W_IIB * L] * ab
+        _scatter(blk, W_, GA, GB, S)
+
+
+@kernel(inline="always")
+def _bias(sep, inv_h, rate, push, msc, isc, use_bias):
+    """(bias, mass scale, impulse scale) of one normal row, as contact_soft.solve_contacts."""
+    spec = sep > 0.0
+    if use_bias:
+        return (sep * inv_h if spec else max(rate * sep, -push), 1.0 if spec else msc, 0.0 if spec else isc)
+    return sep * inv_h if spec else 0.0, 1.0, 0.0
+
+
+@kernel(inline="always")
+def _friction(jn, old, mu, mass_t, rta, rtb, vax, vay, wa, vbx, vby, wb, nx, ny, anx, any_, bnx, bny, iia, iib):
+    """One point's friction row: (new impulse, new velocities).  Scalars only: an array argument
+    of an inlined function leaves reference-count calls in the loop, which stop LLVM."""
+    vt = -(vbx - vax) * ny + (vby - vay) * nx + wb * rtb - wa * rta
+    limit = mu * jn
+    new = min(max(old - mass_t * vt, -limit), limit)
+    j = new - old
+    return (new, vax + j * any_, vay - j * anx, wa - iia * j * rta, vbx - j * bny, vby + j * bnx,
+            wb + iib * j * rtb)
+
+
+@kernel_noalias
+def solve_colour(nb, W_, GA, GB, S, inv_h, push, use_bias):
+    """One pass over ``nb`` blocks of one colour: per manifold the normal rows (2x2 block or
+    sequential), then friction; ``use_bias`` False is the relax pass.  The lane body is written
+    out here, not in a helper: an array passed to an inlined function leaves reference-count
+    calls in the loop, and a call stops LLVM from vectorising it."""
+    for blk in range(nb):
+        o = blk * BLOCK_SIZE
+        for l in range(L):
+            i = o + l
+            a = GA[blk * L + l]
+            b = GB[blk * L + l]
+            nx = W_[i + W_NX * L]
+            ny = W_[i + W_NY * L]
+            ima = W_[i + W_IMA * L]
+            imb = W_[i + W_IMB * L]
+            iia = W_[i + W_IIA * L]
+            iib = W_[i + W_IIB * L]
+            vax = S[a + VX]
+            vay = S[a + VY]
+            wa = S[a + W]
+            vbx = S[b + VX]
+            vby = S[b + VY]
+            wb = S[b + W]
+            anx = ima * nx
+            any_ = ima * ny
+            bnx = imb * nx
+            bny = imb * ny
+            maxj0 = W_[i + W_MAXJ * L]
+            maxj1 = W_[i + P1 + W_MAXJ * L]
+            # every load unconditional and every choice a select: a load under a condition is not
+            # known to be safe to speculate and keeps LLVM from vectorising the loop
+            if use_bias:  # the pair's energy before it first pushes (restitution's cap)
+                first = (W_[i + W_BOUNCY * L] != 0.0) & (maxj0 == 0.0) & (maxj1 == 0.0)
+                ke = _energy(vax, vay, wa, ima, iia) + _energy(vbx, vby, wb, imb, iib)
+                ke_old = W_[i + W_KE0 * L]
+                W_[i + W_KE0 * L] = ke if first else ke_old
+            ddn = (S[b + DPX] - S[a + DPX]) * nx + (S[b + DPY] - S[a + DPY]) * ny
+            cam = S[a + DCOS] - 1.0
+            cbm = S[b + DCOS] - 1.0
+            sa = S[a + DSIN]
+            sb = S[b + DSIN]
+            rate = W_[i + W_RATE * L]
+            msc = W_[i + W_MSC * L]
+            isc = W_[i + W_ISC * L]
+            rna0 = W_[i + W_RNA * L]
+            rnb0 = W_[i + W_RNB * L]
+            rna1 = W_[i + P1 + W_RNA * L]
+            rnb1 = W_[i + P1 + W_RNB * L]
+            sep0 = (W_[i + W_SEP * L] + ddn + cbm * W_[i + W_RTB * L] + sb * rnb0
+                    - cam * W_[i + W_RTA * L] - sa * rna0)
+            sep1 = (W_[i + P1 + W_SEP * L] + ddn + cbm * W_[i + P1 + W_RTB * L] + sb * rnb1
+                    - cam * W_[i + P1 + W_RTA * L] - sa * rna1)
+            bias0, ms0, is0 = _bias(sep0, inv_h, rate, push, msc, isc, use_bias)
+            bias1, ms1, is1 = _bias(sep1, inv_h, rate, push, msc, isc, use_bias)
+            old0 = W_[i + W_JN * L]
+            old1 = W_[i + P1 + W_JN * L]
+            mn0 = W_[i + W_MN * L]
+            mn1 = W_[i + P1 + W_MN * L]
+            dvn = (vbx - vax) * nx + (vby - vay) * ny
+            v0 = dvn + wb * rnb0 - wa * rna0
+            v1 = dvn + wb * rnb1 - wa * rna1
+            # the block solver (constraints/block.py solve_block): all four cases computed, one chosen
+            k11 = W_[i + W_K11 * L]
+            k22 = W_[i + W_K22 * L]
+            k12 = W_[i + W_K12 * L]
+            g0 = v0 - (k11 * old0 + k12 * old1) + bias0
+            g1 = v1 - (k12 * old0 + k22 * old1) + bias1
+            inv_det = W_[i + W_INVDET * L]
+            xb0 = -ms0 * (k22 * g0 - k12 * g1) * inv_det
+            xb1 = -ms0 * (k11 * g1 - k12 * g0) * inv_det
+            xc0 = -ms0 * g0 * mn0
+            xc1 = -ms0 * g1 * mn1
+            c1 = (xb0 >= 0.0) & (xb1 >= 0.0)
+            c2 = (xc0 >= 0.0) & (g1 + k12 * xc0 >= 0.0)
+            c3 = (xc1 >= 0.0) & (g0 + k12 * xc1 >= 0.0)
+            c4 = (g0 >= 0.0) & (g1 >= 0.0)
+            x0 = xb0 if c1 else (xc0 if c2 else 0.0)
+            x1 = xb1 if c1 else (0.0 if c2 else (xc1 if c3 else 0.0))
+            done = (W_[i + W_BLOCK * L] != 0.0) & (ms0 == ms1) & (c1 | c2 | c3 | c4)
+            # the sequential rows (Gauss-Seidel, point 0 then point 1), for when the block does not apply
+            n0 = max(old0 + (-mn0 * ms0 * (v0 + bias0) - is0 * old0), 0.0)
+            j = n0 - old0
+            svax = vax - j * anx
+            svay = vay - j * any_
+            swa = wa - iia * j * rna0
+            svbx = vbx + j * bnx
+            svby = vby + j * bny
+            swb = wb + iib * j * rnb0
+            vn1 = (svbx - svax) * nx + (svby - svay) * ny + swb * rnb1 - swa * rna1
+            n1 = max(old1 + (-mn1 * ms1 * (vn1 + bias1) - is1 * old1), 0.0)
+            j = n1 - old1
+            if use_bias:  # the normal speeds before the impulse, until a point first pushes
+                vn0_old = W_[i + W_VN0 * L]
+                vn1_old = W_[i + P1 + W_VN0 * L]
+                W_[i + W_VN0 * L] = v0 if maxj0 == 0.0 else vn0_old
+                W_[i + P1 + W_VN0 * L] = (v1 if done else vn1) if maxj1 == 0.0 else vn1_old
+            d0 = x0 - old0
+            d1 = x1 - old1
+            d = d0 + d1
+            vax = vax - d * anx if done else svax - j * anx
+            vay = vay - d * any_ if done else svay - j * any_
+            wa = wa - iia * (d0 * rna0 + d1 * rna1) if done else swa - iia * j * rna1
+            vbx = vbx + d * bnx if done else svbx + j * bnx
+            vby = vby + d * bny if done else svby + j * bny
+            wb = wb + iib * (d0 * rnb0 + d1 * rnb1) if done else swb + iib * j * rnb1
+            W_[i + W_JN * L] = x0 if done else n0
+            W_[i + P1 + W_JN * L] = x1 if done else n1
+            for q in range(2):  # friction of both points (unrolled: q is 0 or 1)
+                f = i + q * P1
+                jn = W_[f + W_JN * L]
+                W_[f + W_MAXJ * L] = max(W_[f + W_MAXJ * L], jn)
+                jt, vax, vay, wa, vbx, vby, wb = _friction(jn, W_[f + W_JT * L], W_[f + W_MU * L], W_[f + W_MT * L],
+                                                           W_[f + W_RTA * L], W_[f + W_RTB * L], vax, vay, wa, vbx,
+                                                           vby, wb, nx, ny, anx, any_, bnx, bny, iia, iib)
+                W_[f + W_JT * L] = jt
+            W_[i + W_VAX * L] = vax
+            W_[i + W_VAY * L] = vay
+            W_[i + W_WA * L] = wa
+            W_[i + W_VBX * L] = vbx
+            W_[i + W_VBY * L] = vby
+            W_[i + W_WB * L] = wb
+        _scatter(blk, W_, GA, GB, S)
+
+
+WARM, SOLVE, RELAX = range(3)
+
+
+@kernel
+def coloured_pass(kind, bstart, W_, GA, GB, SB, inv_h, push):
+    """One pass (WARM, SOLVE or RELAX) over every colour in solve order (colouring.py's
+    ``bstart``); each colour's blocks handed over as slices that start at 0."""
+    S = SB.reshape(SB.size)  # the body rows as one flat array (row offsets in GA, GB)
+    for r in range(COLOURS):
+        b0 = bstart[r]
+        b1 = bstart[r + 1]
+        if b1 == b0:
+            continue
+        Wc = W_[b0 * BLOCK_SIZE:b1 * BLOCK_SIZE]
+        ga = GA[b0 * L:b1 * L]
+        gb = GB[b0 * L:b1 * L]
+        if kind == WARM:
+            warm_colour(b1 - b0, Wc, ga, gb, S)
+        else:
+            solve_colour(b1 - b0, Wc, ga, gb, S, inv_h, push, kind == SOLVE)

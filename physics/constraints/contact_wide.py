@@ -1,0 +1,131 @@
+"""The contact rows in Box2D v3's wide layout (b2ContactConstraintWide, contact_solver.c).
+
+The coloured solve (constraints/contact_coloured.py) works on blocks of LANES manifolds of one
+colour (constraints/colouring.py).  A block is NW fields of LANES values each, all blocks in
+one flat array: field f of lane l of block b is ``W[(b * NW + f) * LANES + l]``.  Constant
+strides and one base pointer are what let LLVM turn the lane loop into vector code (a 2-D
+``[field, slot]`` array never vectorised: ../shared/notes/solver-speed.md).  The fields are the
+scratch rows' (constraints/contact_soft.py, ``R``) that a pass reads or writes, plus the bodies'
+inverse masses (read once per step instead of once per pass) and six slots where a lane leaves
+its bodies' new velocities for the scalar scatter.
+
+``pack`` copies the prepared rows into the blocks once per step; ``unpack`` copies what the
+passes accumulated (impulses, first-touch speeds, largest impulses, energy) back into ``R`` for
+restitution and the store; ``repack_normal`` takes restitution's impulses back.  A padding lane
+is all zeros (no mass: its impulses stay zero) and reads and writes one spare body row.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .._jit import kernel
+from .body_rows import II, IM, NB
+from .colouring import LANES
+from .contact_soft import (BLOCK, INV_DET, JN, JT, K11, K12, K22, KE0 as R_KE0, MASS_N, MASS_T, MAXJ, MU,
+                           NX as R_NX, NY as R_NY, PT, RNA, RNB, RTA, RTB, SEP0, SOFT, VN0)
+
+# per point q the fields start at q * PW
+W_RNA, W_RNB, W_RTA, W_RTB, W_MN, W_MT, W_SEP, W_MU, W_VN0, W_MAXJ, W_JN, W_JT = range(12)
+PW = 12
+_M = 2 * PW
+(W_NX, W_NY, W_K11, W_K22, W_K12, W_INVDET, W_BLOCK, W_RATE, W_MSC, W_ISC, W_KE0, W_BOUNCY,
+ W_IMA, W_IMB, W_IIA, W_IIB, W_VAX, W_VAY, W_WA, W_VBX, W_VBY, W_WB) = range(_M, _M + 22)
+NW = _M + 22
+BLOCK_SIZE = NW * LANES  # floats per block
+
+
+
+def wide_arrays(slots: int, dtype=np.float64):
+    """(W, GA, GB) for ``slots`` slots (a multiple of LANES)."""
+    return (np.zeros(slots // LANES * BLOCK_SIZE, dtype), np.zeros(slots, np.uint64),
+            np.zeros(slots, np.uint64))
+
+
+@kernel(inline="always")
+def _at(j, f):
+    """Index of field f of slot j (j >= 0: unsigned arithmetic, no floor-division fix-ups)."""
+    u = np.uint64(j)
+    return np.int64((u // np.uint64(LANES) * np.uint64(NW) + np.uint64(f)) * np.uint64(LANES)
+                    + u % np.uint64(LANES))
+
+
+@kernel
+def pack(C, R, SB, order, slots, pad_row, block_solver, W, GA, GB):
+    """W, GA, GB (body row offsets into the flat SB: row * NB) for the slots 0..slots-1."""
+    for j in range(slots):
+        k = order[j]
+        o = _at(j, 0)  # field f of slot j at o + f * LANES
+        if k < 0:
+            for f in range(NW):
+                W[o + f * LANES] = 0.0
+            GA[j] = pad_row * NB
+            GB[j] = pad_row * NB
+            continue
+        a = C.a[k]
+        b = C.b[k]
+        GA[j] = a * NB
+        GB[j] = b * NB
+        cnt = C.count[k]
+        for q in range(2):
+            po = o + q * PW * LANES
+            rq = q * PT
+            if q < cnt:
+                W[po + W_RNA * LANES] = R[k, rq + RNA]
+                W[po + W_RNB * LANES] = R[k, rq + RNB]
+                W[po + W_RTA * LANES] = R[k, rq + RTA]
+                W[po + W_RTB * LANES] = R[k, rq + RTB]
+                W[po + W_MN * LANES] = R[k, rq + MASS_N]
+                W[po + W_MT * LANES] = R[k, rq + MASS_T]
+                W[po + W_SEP * LANES] = R[k, rq + SEP0]
+                W[po + W_MU * LANES] = R[k, rq + MU]
+                W[po + W_VN0 * LANES] = R[k, rq + VN0]
+                W[po + W_MAXJ * LANES] = R[k, rq + MAXJ]
+                W[po + W_JN * LANES] = R[k, rq + JN]
+                W[po + W_JT * LANES] = R[k, rq + JT]
+            else:
+                for f in range(PW):
+                    W[po + f * LANES] = 0.0
+        W[o + W_NX * LANES] = R[k, R_NX]
+        W[o + W_NY * LANES] = R[k, R_NY]
+        W[o + W_K11 * LANES] = R[k, K11]
+        W[o + W_K22 * LANES] = R[k, K22]
+        W[o + W_K12 * LANES] = R[k, K12]
+        use = block_solver and cnt == 2 and R[k, BLOCK] != 0.0
+        W[o + W_INVDET * LANES] = R[k, INV_DET] if use else 0.0
+        W[o + W_BLOCK * LANES] = 1.0 if use else 0.0
+        W[o + W_RATE * LANES] = R[k, SOFT]
+        W[o + W_MSC * LANES] = R[k, SOFT + 1]
+        W[o + W_ISC * LANES] = R[k, SOFT + 2]
+        W[o + W_KE0 * LANES] = R[k, R_KE0]
+        W[o + W_BOUNCY * LANES] = 1.0 if C.e[k] != 0.0 else 0.0
+        W[o + W_IMA * LANES] = SB[a, IM]
+        W[o + W_IMB * LANES] = SB[b, IM]
+        W[o + W_IIA * LANES] = SB[a, II]
+        W[o + W_IIB * LANES] = SB[b, II]
+
+
+@kernel
+def unpack(C, W, order, slots, R):
+    """What the passes changed back into R: per point JN, JT, VN0, MAXJ, and KE0."""
+    for j in range(slots):
+        k = order[j]
+        if k < 0:
+            continue
+        for q in range(C.count[k]):
+            o = q * PT
+            R[k, o + JN] = W[_at(j, q * PW + W_JN)]
+            R[k, o + JT] = W[_at(j, q * PW + W_JT)]
+            R[k, o + VN0] = W[_at(j, q * PW + W_VN0)]
+            R[k, o + MAXJ] = W[_at(j, q * PW + W_MAXJ)]
+        R[k, R_KE0] = W[_at(j, W_KE0)]
+
+
+@kernel
+def repack_normal(C, R, order, slots, W):
+    """Restitution's normal impulses (it works on R) back into the blocks."""
+    for j in range(slots):
+        k = order[j]
+        if k < 0:
+            continue
+        for q in range(C.count[k]):
+            W[_at(j, q * PW + W_JN)] = R[k, q * PT + JN]

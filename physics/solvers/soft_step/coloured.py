@@ -1,0 +1,98 @@
+"""``soft_step`` with ``solver_layout`` "coloured": the same step as kernel.py, with the contact
+warm start, solve and relax passes run colour by colour over the wide layout
+(constraints/colouring.py, contact_wide.py, contact_coloured.py), Box2D v3's solver layout.
+
+Preparation, restitution and the impulse store stay the row code's (on ``R``): the prepared
+rows are packed into the blocks once per step, and what the passes accumulated is copied back
+before restitution (which then hands its impulses back) and before the store.  Springs and
+joints run exactly as in kernel.py, on the same body rows.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..._jit import kernel
+from ...constraints.colouring import colour_contacts
+from ...constraints.body_rows import (gather_bodies, integrate_row_positions, integrate_row_velocities,
+                                      load_velocities, store_velocities)
+from ...constraints.contact_coloured import RELAX, SOLVE, WARM, coloured_pass
+from ...constraints.contact_restitution import restitution_contacts
+from ...constraints.contact_soft import prepare_contacts, store_impulses
+from ...constraints.contact_wide import pack, repack_normal, unpack
+from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
+from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
+from ...constraints.joints.sync import save_start
+from ...constraints.joints.system.solve import correct_system
+from ...constraints.point import zero_impulses
+from ...constraints.restitution_cluster import save_velocities
+from ...constraints.springs.substep import solve_springs
+from .kernel import GLOBAL
+
+
+@kernel
+def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, colour, order, bstart, force_overflow, W, GA,
+                       GB):
+    """One step as kernel.soft_step, the contacts coloured first (colouring.colour_contacts into
+    the scratch ``used``, ``colour``, ``order``, ``bstart``; ``W``, ``GA``, ``GB`` the blocks'
+    scratch, SB with a spare row at n + 1 for the padding lanes).  Returns the number of joints
+    that broke, or minus the slots needed when GA is too short (nothing changed: call again
+    with larger blocks; sized here, the colouring costs no extra call from Python)."""
+    c = ctx[0]
+    p = par[0]
+    n = c.n
+    slots = colour_contacts(C.a, C.b, c.nc, B.inv_m, B.inv_i, n, used, colour, order, bstart, force_overflow)
+    if slots > len(GA):
+        return -slots
+    h = p.h
+    broken = 0
+    if not p.warm_starting:
+        zero_impulses(C, c.nc)
+    prepare_contacts(c, p, B, C, R)
+    gather_bodies(B, n, SB)
+    pack(C, R, SB, order, slots, n + 1, p.block_solver, W, GA, GB)
+    if J is not None:
+        if not p.warm_starting:
+            zero_joint_impulses(J, c.nj)
+        prepare_joints(c, B, J, JW, h, p.soft_joint[0], p.soft_joint[1], p.soft_joint[2])
+        save_start(B, n, JW.X0, JW.Q0)
+    eq_global = p.joint_solver == GLOBAL
+    project = J is not None and eq_global and p.joint_projection and JS.dims[0] > 0
+    bouncy = False
+    for k in range(c.nc):
+        if C.e[k] != 0.0:
+            bouncy = True
+            break
+    V0 = np.empty((n if bouncy else 0, 3))
+    for _ in range(p.substeps):
+        integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
+        if c.ns > 0:
+            store_velocities(B, n, SB)
+            solve_springs(B, S, c.ns, h)
+            load_velocities(B, n, SB)
+        if bouncy:
+            save_velocities(SB, n, V0)
+        coloured_pass(WARM, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
+        if J is not None:
+            warm_start_joints(c, B, J, JW)
+        for it in range(p.iterations):
+            coloured_pass(SOLVE, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
+            if J is not None:
+                solve_joints(c, B, J, JW, JS, True, p.inv_h, eq_global)
+        integrate_row_positions(B, n, SB, h)
+        if project:
+            refresh_rows(c, B, J, JW)
+            correct_system(B, JW, JS, 1.0)
+        if p.relax:
+            coloured_pass(RELAX, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
+            if J is not None:
+                solve_joints(c, B, J, JW, JS, False, p.inv_h, eq_global)
+        if bouncy:  # restitution works on the rows: hand them over and take its impulses back
+            unpack(C, W, order, slots, R)
+            restitution_contacts(c, p, SB, C, R, V0)
+            repack_normal(C, R, order, slots, W)
+    unpack(C, W, order, slots, R)
+    store_impulses(c, C, R)
+    if J is not None:
+        broken = store_joints(c, J, JW, p.inv_h)
+    store_velocities(B, n, SB)
+    return broken

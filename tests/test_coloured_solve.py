@@ -1,0 +1,171 @@
+"""soft_step's ``solver_layout`` "coloured" (issue 17): graph-coloured contact manifolds solved
+eight side by side (physics/constraints/colouring.py, contact_wide.py, contact_coloured.py).
+
+The kernel is checked against the row solve exactly: with every manifold forced into the
+overflow colour (one manifold per block, in table order) it must reproduce the row solve bit
+for bit, on a stack and on bouncing boxes (the restitution hand-over).  The colouring itself is
+checked as a property on random contact graphs; the physics on the pyramid with the bound of
+tests/test_stacking.py; the vector code by grepping the machine code.
+"""
+import re
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+import physics
+from builders import DT, finite, ground, pyramid_world, state_array, state_digest, world
+from physics.constraints.colouring import COLOURS, LANES, OVERFLOW, colour_contacts
+
+PROPERTY = settings(derandomize=True, database=None, deadline=None, max_examples=200)
+
+
+def coloured(w, force_overflow=False):
+    w.settings["solver_layout"] = "coloured"
+    w._mode.coloured.force_overflow = force_overflow
+    return w
+
+
+def test_rows_is_the_default():
+    assert physics.World().settings["solver_layout"] == "rows"
+
+
+@st.composite
+def contact_graphs(draw):
+    n = draw(st.integers(1, 40))
+    fixed = draw(st.lists(st.booleans(), min_size=n, max_size=n))
+    pairs = draw(st.lists(st.tuples(st.integers(0, n - 1), st.integers(0, n - 1)), max_size=300))
+    # a body never touches itself (fixtures of one body do not collide: collision/narrowphase)
+    return n, fixed, [p for p in pairs if p[0] != p[1]]
+
+
+def colour(n, fixed, pairs, force=False):
+    inv_m = np.array([0.0 if f else 1.0 for f in fixed])
+    inv_i = inv_m * 2.0
+    ca = np.array([p[0] for p in pairs], np.int32)
+    cb = np.array([p[1] for p in pairs], np.int32)
+    nc = len(pairs)
+    order = np.full(nc * LANES + COLOURS * LANES, -9, np.int32)
+    col = np.zeros(max(nc, 1), np.int32)
+    bstart = np.zeros(COLOURS + 1, np.int64)
+    slots = colour_contacts(ca, cb, nc, inv_m, inv_i, n, np.zeros(n, np.uint64), col, order, bstart, force)
+    return slots, order[:slots], bstart, col[:nc]
+
+
+@PROPERTY
+@given(contact_graphs())
+def test_colouring_is_valid(graph):
+    n, fixed, pairs = graph
+    slots, order, bstart, col = colour(n, fixed, pairs)
+    assert slots % LANES == 0 and bstart[0] == 0 and bstart[-1] * LANES == slots
+    assert np.all(np.diff(bstart) >= 0)
+    # every manifold exactly once, the rest padding
+    real = order[order >= 0]
+    assert sorted(real.tolist()) == list(range(len(pairs)))
+    assert np.all((order >= 0) | (order == -1))
+    for r in range(COLOURS):
+        members = order[bstart[r] * LANES:bstart[r + 1] * LANES]
+        members = members[members >= 0]
+        if r == 0:  # the overflow colour, solved first: one manifold per block
+            assert np.all(col[members] == OVERFLOW)
+            for blk in range(bstart[0], bstart[1]):
+                assert np.sum(order[blk * LANES:(blk + 1) * LANES] >= 0) == 1
+            continue
+        assert np.all(col[members] == r - 1)
+        moving = [b for k in members for b in pairs[k] if not fixed[b]]
+        # no moving body twice in one colour
+        assert len(moving) == len(set(moving))
+
+
+def test_overflow_when_colours_run_out():
+    # one moving body touching 30 others: it has DYNAMIC_COLOURS colours for them, the rest overflow
+    pairs = [(0, i) for i in range(1, 31)]
+    slots, order, bstart, col = colour(31, [False] * 31, pairs)
+    assert np.sum(col == OVERFLOW) == 30 - 20
+    assert sorted(order[order >= 0].tolist()) == list(range(30))
+
+
+def run_pair(build, steps, **settings_):
+    """(rows state, coloured-forced-overflow state) after ``steps`` steps of ``build()``."""
+    out = []
+    for force in (None, True):
+        w = build()
+        w.settings.update(settings_)
+        if force:
+            coloured(w, force_overflow=True)
+        for _ in range(steps):
+            w.step()
+        out.append(state_array(w))
+    return out
+
+
+def test_overflow_order_reproduces_the_row_solve_bit_for_bit():
+    rows, col = run_pair(lambda: pyramid_world(10)[0], 120)
+    assert np.array_equal(rows, col)
+    rows, col = run_pair(lambda: pyramid_world(10)[0], 30, block_solver=False, relax=False, substeps=2)
+    assert np.array_equal(rows, col)
+
+
+def bouncing():
+    w = world()
+    ground(w, width=30.0)
+    for i in range(8):
+        w.add_body(physics.Polygon.box(1.0, 1.0), position=(2.0 * i - 7.0, 1.0 + 0.7 * i), restitution=0.6,
+                   angle=0.1 * i)
+    w.add_body(physics.Polygon.box(1.0, 1.0), position=(0.3, 9.0), restitution=0.0)
+    return w
+
+
+def test_overflow_order_reproduces_restitution_bit_for_bit():
+    rows, col = run_pair(bouncing, 150)
+    assert np.array_equal(rows, col)
+    assert np.ptp(rows[:, 1]) > 0.0
+
+
+def top_drift_coloured(base, steps):
+    w, top = pyramid_world(base)
+    coloured(w)
+    p0 = np.array(top.position)
+    for _ in range(steps):
+        w.step()
+    assert finite(w)
+    return w, float(np.hypot(*(np.array(top.position) - p0)))
+
+
+def test_pyramid_20_coloured_holds():
+    # the bound of tests/test_stacking.py::test_pyramid_20 for soft_step (10 s); measured 0.019 m
+    # (rows: 0.013 m; Box2D v3.2: 0.030 m)
+    _, d = top_drift_coloured(20, int(round(10.0 / DT)))
+    print(f"pyramid 20 coloured: top box moved {d:.4f} m")
+    assert d < 0.05
+
+
+def test_coloured_is_deterministic():
+    a, _ = top_drift_coloured(12, 90)
+    b, _ = top_drift_coloured(12, 90)
+    assert state_digest(a) == state_digest(b)
+
+
+def _host_has(feature):
+    import llvmlite.binding as llvm
+    return llvm.get_host_cpu_features().get(feature, False)
+
+
+@pytest.mark.skipif(not _host_has("avx2"), reason="the vector code is AVX2/AVX-512; this CPU has neither")
+def test_coloured_kernels_vectorise():
+    """The lane loops compile to vector code: packed registers and gathers of the bodies'
+    state.  Compiled afresh (cached code cannot be inspected); this fails if a numba upgrade
+    drops the noalias flag (physics/_jit.py) or a change puts a branch or call in the loop."""
+    from physics._jit import kernel_noalias
+    from physics.constraints import contact_coloured as cc
+    W = np.zeros(cc.BLOCK_SIZE)
+    G = np.zeros(LANES, np.uint64)
+    S = np.zeros(4 * 9)
+    for k, args in ((cc.solve_colour, (1.0, 1.0, True)), (cc.warm_colour, ())):
+        f = kernel_noalias(cache=False)(k.py_func)
+        f(0, W, G, G, S, *args)
+        asm = next(iter(f.inspect_asm().values()))
+        wide = len(re.findall(r"%[yz]mm\d+", asm))
+        gathers = len(re.findall(r"\bvgather\w+", asm))
+        print(k.__name__, "ymm/zmm operands", wide, "gathers", gathers)
+        assert gathers >= 6 and wide > 100, k.__name__
