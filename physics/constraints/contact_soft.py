@@ -203,10 +203,9 @@ def _energy(vx, vy, w, im, ii):
 @kernel(inline="always")
 def deep_bias(rate, sep, deep):
     """The soft row's velocity bias at separation ``sep`` < 0: the bias ``rate`` up to ``deep``
-    of overlap, DEEP_SOFTEN of it beyond (continuous)."""
-    if sep >= -deep:
-        return rate * sep
-    return rate * (DEEP_SOFTEN * sep - (1.0 - DEEP_SOFTEN) * deep)
+    of overlap, DEEP_SOFTEN of it beyond (continuous; written as a max so that the coloured
+    solve's lanes stay branch-free)."""
+    return rate * max(sep, DEEP_SOFTEN * sep - (1.0 - DEEP_SOFTEN) * deep)
 
 
 @kernel
