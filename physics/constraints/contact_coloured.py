@@ -26,9 +26,10 @@ import numpy as np
 from .._jit import kernel, kernel_noalias
 from .body_rows import DCOS as _DC, DPX as _DX, DPY as _DY, DSIN as _DS, VX as _VX, VY as _VY, W as _W
 from .colouring import COLOURS, LANES
+from .contact_soft import deep_bias
 from .contact_wide import (BLOCK_SIZE, PW, W_BLOCK, W_BOUNCY, W_IIA, W_IIB, W_IMA, W_IMB, W_INVDET, W_ISC, W_JN,
                            W_JT, W_K11, W_K12, W_K22, W_KE0, W_MAXJ, W_MN, W_MSC, W_MT, W_MU, W_NX, W_NY, W_RATE,
-                           W_RNA, W_RNB, W_RTA, W_RTB, W_SEP, W_VAX, W_VAY, W_VBX, W_VBY, W_VN0, W_WA, W_WB)
+                           W_RNA, W_RNB, W_RTA, W_RTB, W_SEP, W_VAX, W_VAY, W_VBX, W_VBY, W_VN0, W_WA, W_WB, W_DEEP)
 
 # body row offsets as uint64: an unsigned index has no negative-index wraparound code and
 # uint64 + int64 would be float64 in numba
@@ -94,11 +95,12 @@ def warm_colour(nb, W_, GA, GB, S):
 
 
 @kernel(inline="always")
-def _bias(sep, inv_h, rate, push, msc, isc, use_bias):
+def _bias(sep, inv_h, rate, deep, push, msc, isc, use_bias):
     """(bias, mass scale, impulse scale) of one normal row, as contact_soft.solve_contacts."""
     spec = sep > 0.0
     if use_bias:
-        return (sep * inv_h if spec else max(rate * sep, -push), 1.0 if spec else msc, 0.0 if spec else isc)
+        return (sep * inv_h if spec else max(deep_bias(rate, sep, deep), -push), 1.0 if spec else msc,
+                0.0 if spec else isc)
     return sep * inv_h if spec else 0.0, 1.0, 0.0
 
 
@@ -159,6 +161,7 @@ def solve_colour(nb, W_, GA, GB, S, inv_h, push, use_bias):
             rate = W_[i + W_RATE * L]
             msc = W_[i + W_MSC * L]
             isc = W_[i + W_ISC * L]
+            deep = W_[i + W_DEEP * L]
             rna0 = W_[i + W_RNA * L]
             rnb0 = W_[i + W_RNB * L]
             rna1 = W_[i + P1 + W_RNA * L]
@@ -167,8 +170,8 @@ def solve_colour(nb, W_, GA, GB, S, inv_h, push, use_bias):
                     - cam * W_[i + W_RTA * L] - sa * rna0)
             sep1 = (W_[i + P1 + W_SEP * L] + ddn + cbm * W_[i + P1 + W_RTB * L] + sb * rnb1
                     - cam * W_[i + P1 + W_RTA * L] - sa * rna1)
-            bias0, ms0, is0 = _bias(sep0, inv_h, rate, push, msc, isc, use_bias)
-            bias1, ms1, is1 = _bias(sep1, inv_h, rate, push, msc, isc, use_bias)
+            bias0, ms0, is0 = _bias(sep0, inv_h, rate, deep, push, msc, isc, use_bias)
+            bias1, ms1, is1 = _bias(sep1, inv_h, rate, deep, push, msc, isc, use_bias)
             old0 = W_[i + W_JN * L]
             old1 = W_[i + P1 + W_JN * L]
             mn0 = W_[i + W_MN * L]

@@ -30,6 +30,14 @@ MAX_LOAD = 50.0     # loads accelerating the pair by more than this many g keep 
 
 
 @kernel(inline="always")
+def moving_size(ima, imb, ra, rb):
+    """The smaller bounding radius of the pair's moving bodies (inverse mass > 0)."""
+    if ima > 0.0 and imb > 0.0:
+        return min(ra, rb)
+    return ra if ima > 0.0 else rb
+
+
+@kernel(inline="always")
 def contact_hertz(hertz, load, ima, imb, ra, rb, h, g):
     """Frequency (Hz) of a contact: the mode's ``hertz``, raised for the ``load`` (N s per
     sub-step, all points) so that its deflection stays below DEFLECTION of the smaller moving
@@ -40,13 +48,8 @@ def contact_hertz(hertz, load, ima, imb, ra, rb, h, g):
     accel = load * (ima + imb) / h
     if accel > MAX_LOAD * g:
         return hertz
-    if ima > 0.0 and imb > 0.0:
-        if ima > MAX_RATIO * imb or imb > MAX_RATIO * ima:
-            return hertz
-        size = min(ra, rb)
-    elif ima > 0.0:
-        size = ra
-    else:
-        size = rb
+    if ima > 0.0 and imb > 0.0 and (ima > MAX_RATIO * imb or imb > MAX_RATIO * ima):
+        return hertz
+    size = moving_size(ima, imb, ra, rb)
     need = math.sqrt(accel / (DEFLECTION * size)) / (2.0 * math.pi)
     return min(max(hertz, need), STIFFEN * hertz)

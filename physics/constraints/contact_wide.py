@@ -22,15 +22,15 @@ from .._jit import kernel
 from .body_rows import II, IM, NB
 from .colouring import LANES
 from .contact_soft import (BLOCK, INV_DET, JN, JT, K11, K12, K22, KE0 as R_KE0, MASS_N, MASS_T, MAXJ, MU,
-                           NX as R_NX, NY as R_NY, PT, RNA, RNB, RTA, RTB, SEP0, SOFT, VN0)
+                           NX as R_NX, NY as R_NY, PT, RNA, RNB, RTA, RTB, SEP0, SOFT, VN0, DEEPD)
 
 # per point q the fields start at q * PW
 W_RNA, W_RNB, W_RTA, W_RTB, W_MN, W_MT, W_SEP, W_MU, W_VN0, W_MAXJ, W_JN, W_JT = range(12)
 PW = 12
 _M = 2 * PW
 (W_NX, W_NY, W_K11, W_K22, W_K12, W_INVDET, W_BLOCK, W_RATE, W_MSC, W_ISC, W_KE0, W_BOUNCY,
- W_IMA, W_IMB, W_IIA, W_IIB, W_VAX, W_VAY, W_WA, W_VBX, W_VBY, W_WB) = range(_M, _M + 22)
-NW = _M + 22
+ W_IMA, W_IMB, W_IIA, W_IIB, W_VAX, W_VAY, W_WA, W_VBX, W_VBY, W_WB, W_DEEP) = range(_M, _M + 23)
+NW = _M + 23
 BLOCK_SIZE = NW * LANES  # floats per block
 
 
@@ -96,6 +96,7 @@ def pack(C, R, SB, order, slots, pad_row, block_solver, W, GA, GB):
         W[o + W_RATE * LANES] = R[k, SOFT]
         W[o + W_MSC * LANES] = R[k, SOFT + 1]
         W[o + W_ISC * LANES] = R[k, SOFT + 2]
+        W[o + W_DEEP * LANES] = R[k, DEEPD]
         W[o + W_KE0 * LANES] = R[k, R_KE0]
         W[o + W_BOUNCY * LANES] = 1.0 if C.e[k] != 0.0 else 0.0
         W[o + W_IMA * LANES] = SB[a, IM]
