@@ -1,5 +1,6 @@
 """Graph colouring of the contact manifolds (Box2D v3's constraint_graph.c, b2AssignJointColor /
-b2AddContactToGraph), recomputed every step after the narrow phase.
+b2AddContactToGraph), done every step after the narrow phase, a pair keeping its colour while it
+touches (the contact table's ``colour``, carried by the narrow phase like the warm-start impulses).
 
 No two manifolds of one colour share a body that moves, so the rows of a colour can be solved
 side by side (constraints/contact_wide.py) in any order and give the same answer.  Bodies
@@ -13,8 +14,15 @@ v3 takes the highest free one instead; measured here, that solves the ground con
 the stack they carry and pyramid 20's top box drifted 0.075 m in 10 s, against 0.019 m from
 1 up (0.013 m in the row solve's table order).  A manifold that finds none goes to the OVERFLOW colour, whose
 manifolds are then solved one to a block (still correct, only not side by side).  A colour set
-per body is one bit mask, so the stage costs one pass over the manifolds and one over the
+per body is one bit mask, so the stage costs two passes over the manifolds and one over the
 bodies, with no per-colour tables to clear.
+
+Colours persist, as in Box2D v3 (a contact is added to the graph when it begins touching and
+removed when it stops): the first pass keeps every carried colour that is still valid (in its
+range, free at its moving bodies; checked, so a body that changed kind or a stale table can
+never break the colouring), the second gives the rest (new pairs, and overflow ones, which try
+again) the lowest free colour.  Recolouring from scratch every step instead lets one contact
+coming or going shift the colours, and so the Gauss-Seidel order, of the manifolds after it.
 """
 from __future__ import annotations
 
@@ -42,11 +50,25 @@ def _lowest_free(taken, lo, hi):
     return c
 
 
+@kernel(inline="always")
+def _kept(c, ma, mb, taken):
+    """May a manifold keep its carried colour ``c``: in the range of its kind, free at its bodies?"""
+    if c < 0 or c == OVERFLOW:
+        return False
+    if ma and mb:
+        return c < DYNAMIC_COLOURS and (taken >> np.uint64(c)) & np.uint64(1) == 0
+    if ma or mb:
+        return c >= 1 and (taken >> np.uint64(c)) & np.uint64(1) == 0
+    return c == 1
+
+
 @kernel
 def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, force_overflow=False):
     """Colour the manifolds 0..nc-1 (bodies ``ca``/``cb``) and lay them out in blocks.
 
-    ``used`` (n uint64, scratch): the colours taken at each body.  Writes ``colour[k]``,
+    ``used`` (n uint64, scratch): the colours taken at each body.  ``colour[k]`` (in and out,
+    the contact table's column): the colour carried from the previous step, -1 for a new pair;
+    a valid one is kept, the others get the lowest free.  Writes
     ``order`` (slot -> manifold, -1 for padding; colour by colour, overflow first as Box2D
     solves it first, each colour padded to whole blocks of LANES, an overflow manifold alone
     in its block; with ``force_overflow`` every manifold, Box2D's B2_FORCE_OVERFLOW: the table's
@@ -58,28 +80,38 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
         used[i] = 0
     count = np.zeros(COLOURS, np.int64)
     one = np.uint64(1)
-    for k in range(nc):
-        a = ca[k]
-        b = cb[k]
-        ma = inv_m[a] > 0.0 or inv_i[a] > 0.0  # moves (an array passed to an inlined helper
-        mb = inv_m[b] > 0.0 or inv_i[b] > 0.0  # would cost reference counting per manifold)
-        c = OVERFLOW
-        if force_overflow:
-            pass
-        elif ma and mb:
-            c = _lowest_free(used[a] | used[b], 0, DYNAMIC_COLOURS)
-        elif ma or mb:
-            c = _lowest_free(used[a if ma else b], 1, OVERFLOW)
-        else:
-            c = 1  # two fixed bodies: nothing to conflict with (any colour would do)
-        if c != OVERFLOW:
-            bit = one << np.uint64(c)
-            if ma:
-                used[a] |= bit
-            if mb:
-                used[b] |= bit
-        colour[k] = c
-        count[c] += 1
+    for sweep in range(2):  # 0: keep the carried colours that are still valid; 1: colour the rest
+        for k in range(nc):
+            a = ca[k]
+            b = cb[k]
+            ma = inv_m[a] > 0.0 or inv_i[a] > 0.0  # moves (an array passed to an inlined helper
+            mb = inv_m[b] > 0.0 or inv_i[b] > 0.0  # would cost reference counting per manifold)
+            taken = (used[a] if ma else np.uint64(0)) | (used[b] if mb else np.uint64(0))
+            if sweep == 0:
+                c = np.int64(colour[k])
+                if force_overflow or not _kept(c, ma, mb, taken):
+                    colour[k] = -1
+                    continue
+            elif colour[k] >= 0:
+                continue
+            else:
+                c = OVERFLOW
+                if force_overflow:
+                    pass
+                elif ma and mb:
+                    c = _lowest_free(taken, 0, DYNAMIC_COLOURS)
+                elif ma or mb:
+                    c = _lowest_free(taken, 1, OVERFLOW)
+                else:
+                    c = 1  # two fixed bodies: nothing to conflict with (any colour would do)
+            if c != OVERFLOW:
+                bit = one << np.uint64(c)
+                if ma:
+                    used[a] |= bit
+                if mb:
+                    used[b] |= bit
+            colour[k] = c
+            count[c] += 1
     # solve order: the overflow colour first (one manifold per block), then 0, 1, ...
     first = np.empty(COLOURS, np.int64)  # first slot of each colour
     slot = 0

@@ -18,6 +18,10 @@ from step to step:
 * ``approach``: the fastest approach speed a penalty contact has seen, as the
   most negative normal speed (m/s, <= 0).
 
+and per row, ``colour``: the graph colour the coloured contact solve gave the pair
+(constraints/colouring.py), kept while the pair has a row so that one contact coming or
+going does not reorder the others' solve (Box2D v3's constraint graph); a new pair has -1.
+
 Per-step scratch of a solver (anchors, effective masses, biases) lives in that
 solver's own arrays, never here.
 """
@@ -47,6 +51,7 @@ CONTACT_FIELDS = {
     "e": ((), f8),                 # combined restitution: max(e_a, e_b)
     "mu_s": ((), f8),              # combined static friction: sqrt(mu_a mu_b)
     "mu_d": ((), f8),              # combined dynamic friction: sqrt(mu_a mu_b)
+    "colour": ((), i1),            # soft_step "coloured" layout's graph colour, kept while the pair touches; -1: none yet
 }
 #: largest growth of the impulses' time span that ContactBuffer.adopt rescales (beyond: cold start);
 #: 4 covers soft_step -> sequential_impulse at the default 4 sub-steps

@@ -6,7 +6,8 @@ by a merge walk (one pointer that only moves forward).  The carried state
 approach memory) is copied per point only where the feature id matches: a
 point made by other features is a different contact, and reusing its impulse
 would inject energy (Catto, "Iterative dynamics with temporal coherence",
-GDC 2005).
+GDC 2005).  The row's graph colour (``colour``, constraints/colouring.py) is carried
+whenever the key matches: the pair is the same pair, whatever its points.
 """
 from __future__ import annotations
 
@@ -25,6 +26,7 @@ def seek(P, n_prev, ptr, key):
 def carry_over(C, row, P, n_prev, ptr):
     """Fill row ``row``'s carried point state from previous row ``ptr`` (if same key), else zero."""
     found = ptr < n_prev and P.key[ptr] == C.key[row]
+    C.colour[row] = P.colour[ptr] if found else -1
     for p in range(2):
         C.jn[row, p] = 0.0
         C.jt[row, p] = 0.0

@@ -30,17 +30,18 @@ from .kernel import GLOBAL
 
 
 @kernel
-def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, colour, order, bstart, force_overflow, W, GA,
+def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart, force_overflow, W, GA,
                        GB):
-    """One step as kernel.soft_step, the contacts coloured first (colouring.colour_contacts into
-    the scratch ``used``, ``colour``, ``order``, ``bstart``; ``W``, ``GA``, ``GB`` the blocks'
-    scratch, SB with a spare row at n + 1 for the padding lanes).  Returns the number of joints
-    that broke, or minus the slots needed when GA is too short (nothing changed: call again
-    with larger blocks; sized here, the colouring costs no extra call from Python)."""
+    """One step as kernel.soft_step, the contacts coloured first (colouring.colour_contacts: the
+    colours in the table's ``C.colour``, kept from step to step, with the scratch ``used``,
+    ``order``, ``bstart``; ``W``, ``GA``, ``GB`` the blocks' scratch, SB with a spare row at
+    n + 1 for the padding lanes).  Returns the number of joints that broke, or minus the slots
+    needed when GA is too short (nothing changed: call again with larger
+    blocks; sized here, the colouring costs no extra call from Python)."""
     c = ctx[0]
     p = par[0]
     n = c.n
-    slots = colour_contacts(C.a, C.b, c.nc, B.inv_m, B.inv_i, n, used, colour, order, bstart, force_overflow)
+    slots = colour_contacts(C.a, C.b, c.nc, B.inv_m, B.inv_i, n, used, C.colour, order, bstart, force_overflow)
     if slots > len(GA):
         return -slots
     h = p.h

@@ -1,8 +1,9 @@
 """``soft_step``'s ``solver_layout`` "coloured": the per-step colouring and the scratch it needs.
 
 Each step, after the narrow phase, the step kernel (coloured.py) first colours the manifolds
-(constraints/colouring.py); when they need more slots than the blocks hold it returns before
-changing anything, and the blocks grow (doubling) for a second call.  Scratch is reused.
+(constraints/colouring.py; the colours live in the contact table, carried from step to step);
+when they need more slots than the blocks hold it returns before changing anything, and the
+blocks grow (doubling) for a second call.  Scratch is reused.
 """
 from __future__ import annotations
 
@@ -19,7 +20,6 @@ class ColouredScratch:
     def __init__(self):
         self.force_overflow = False  # every manifold alone in its block: the row solve's order (tests)
         self.used = np.zeros(64, np.uint64)
-        self.colour = np.zeros(64, np.int32)
         self.order = np.zeros(64 * LANES, np.int32)
         self.bstart = np.zeros(COLOURS + 1, np.int64)
         self._wide(64 * LANES)
@@ -37,8 +37,7 @@ class ColouredScratch:
             self.used = np.zeros(2 * n, np.uint64)
         # at most one block per manifold (overflow) plus one partial block per colour
         need = nc * LANES + COLOURS * LANES
-        if nc > len(self.colour) or need > len(self.order):
-            self.colour = np.zeros(2 * nc, np.int32)
+        if need > len(self.order):
             self.order = np.zeros(2 * need, np.int32)
 
     def step(self, ctx, par, store, R, SB, J, JW, JS) -> int:
@@ -46,7 +45,7 @@ class ColouredScratch:
         self.ensure(store)
         while True:
             out = soft_step_coloured(ctx.array, par.array, store.bodies.view, store.contacts.cur,
-                                     store.springs.view, R, SB, J, JW, JS, self.used, self.colour, self.order,
+                                     store.springs.view, R, SB, J, JW, JS, self.used, self.order,
                                      self.bstart, self.force_overflow, self.W, self.GA, self.GB)
             if out >= 0:
                 return out
