@@ -15,7 +15,7 @@ def _rgba(hexstr: str, a: float = 1.0) -> np.ndarray:
 #: families that read on the dark background and stay clear of the state and overlay colours
 #: (no orange: the selection and the first compare rival; no saturated pink or yellow: joints
 #: and springs; no purple: kinematic bodies; no grey: static ones)
-DEFAULT_PALETTE = ("#4f8fd6", "#4fb8c4", "#c48aa5", "#81b29a", "#b8b070")
+DEFAULT_PALETTE = ("#4f8fd6", "#81b29a", "#c48aa5", "#4fb8c4", "#b8b070")
 DEFAULT_FILLS = np.stack([_rgba(c) for c in DEFAULT_PALETTE])
 # colours by state (fill, outline)
 STATIC_FILL, STATIC_LINE = _rgba("#4a5361"), _rgba("#8a97a8")
