@@ -11,9 +11,9 @@ ROOT = Path(__file__).resolve().parents[2]
 
 def _known_fills(static=True) -> np.ndarray:
     """(K, 3) 0-255 fills a body can be drawn in (app/render/colors.py): the default palette and
-    the inspector's, each awake and asleep, and (``static``) the static grey."""
+    the inspector's, each awake, hovered and asleep, and (``static``) the static grey."""
     rgb = np.array([hex_to_rgb(h) for h in (*colors.DEFAULT_PALETTE, *colors.PALETTE)])
-    fills = [rgb, colors.asleep(rgb)] + ([colors.STATIC_FILL[None, :3]] if static else [])
+    fills = [rgb, rgb + (1.0 - rgb) * colors.HOVER_TINT, colors.asleep(rgb)] + ([colors.STATIC_FILL[None, :3]] if static else [])
     return np.round(np.concatenate(fills) * 255)
 
 
