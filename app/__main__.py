@@ -16,6 +16,8 @@ def parse_args(argv=None):
     ap.add_argument("--exit", action="store_true", help="exit after --frames (status 3 on any OpenGL error)")
     ap.add_argument("--benchmark-frames", type=int, default=None,
                     help="run N frames unthrottled, one physics step each, and print the frame-time split")
+    ap.add_argument("--plot", action="store_true",
+                    help="open the Plot tab with four quantities of the first dynamic body (a benchmark's load)")
     ap.add_argument("--hide-ui", action="store_true", help="start with the panels hidden (H toggles)")
     ap.add_argument("--no-stats", action="store_true", help="start with the stats window closed")
     ap.add_argument("--bodies", type=int, default=None, help="instead of a scene: N dynamic bodies in a box")
@@ -43,6 +45,8 @@ def main(argv=None) -> int:
                   autosave_interval=args.autosave_interval, offer_autosave=not args.no_autosave_offer)
     win.show_ui = not args.hide_ui
     win.panels.show_stats = not args.no_stats
+    if args.plot:
+        plot_first_body(win)
     loop = MainLoop(win)
     frames = args.frames
     if frames is None and args.benchmark_frames:
@@ -54,6 +58,21 @@ def main(argv=None) -> int:
         from .benchmark import FrameBenchmark
         FrameBenchmark(args.benchmark_frames).attach(loop)
     return loop.run()
+
+
+PLOTTED = ("x", "y", "speed", "kinetic energy")
+
+
+def plot_first_body(win) -> None:
+    """Record PLOTTED of the first dynamic body and show the Plot tab (what a user who plots one
+    body sees; ``--benchmark-frames`` then times frames with those plots drawn)."""
+    ed = win.editor
+    body = next((b for b in ed.world.bodies if b.kind == "dynamic"), None)
+    if body is None:
+        return
+    for q in PLOTTED:
+        win.recorder.toggle(body, q, ed.refs, ed.world)
+    win.panels.plot.show()
 
 
 if __name__ == "__main__":

@@ -38,7 +38,7 @@ def _bodies(app):
                     "shape": b.shape.kind, "density": b.density,
                     "vertices": 0 if isinstance(b.shape, physics.Circle) else len(b.shape.vertices),
                     "fixtures": [f.shape.kind for f in b.fixtures], "mass": b.mass,
-                    "color": None if app.editor.color_of(b) is None else rgb_to_hex(app.editor.color_of(b))})
+                    "awake": b.awake, "color": None if app.editor.color_of(b) is None else rgb_to_hex(app.editor.color_of(b))})
     return out
 
 

@@ -26,6 +26,8 @@ def snapshot(world, skip_joints=()) -> dict:
                      **{f: getattr(sp, f) for f in SPRING_FIELDS}} for sp in world.springs],
         "joints": [{"kind": j.kind, "a": index[j.body_a.id], "b": None if j.body_b is None else index[j.body_b.id],
                     "fields": joint_fields(j)} for j in world.joints if j.id not in skip_joints],
+        # the bodies' own colours as loaded or saved (app data, app.body_colors), by place
+        "colors": {index[i]: h for i, h in world.metadata.get("colors", {}).items() if i in index},
     }
 
 
@@ -44,6 +46,8 @@ def restore(snap: dict):
                      **{f: s[f] for f in SPRING_FIELDS})
     for j in snap.get("joints", ()):
         make_joint(w, j["kind"], bodies[j["a"]], None if j["b"] is None else bodies[j["b"]], j["fields"])
+    if snap.get("colors"):
+        w.metadata["colors"] = {bodies[k].id: h for k, h in snap["colors"].items()}
     return w
 
 
@@ -61,6 +65,7 @@ class Document:
         return self.history.version != self.saved_version
 
     def mark_saved(self, path: Path):
+        """After a save (the editor's colours already in ``world.metadata``, as the file has them)."""
         self.path = Path(path)
         self.saved_version = self.history.version
         self.loaded = snapshot(self.world)

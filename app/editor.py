@@ -101,12 +101,8 @@ class Editor:
         self.selection = []
         self.hovered = None
         self.follow = None
-        places = self._color_places() if keep_camera else {}   # a reset keeps the colours by place
         self.doc = Document(world, path)
-        if keep_camera:
-            self.colors = {self.doc.refs.of(world.bodies[k]): c for k, c in places.items() if k < len(world.bodies)}
-        else:                                                  # the scene file's own colours
-            self.colors = from_metadata(world, self.doc.refs)
+        self.colors = from_metadata(world, self.doc.refs)   # the file's colours (a reset's too)
         self.tracers.reset(world, self.doc.refs, keep=keep_camera)   # a reset clears the trails
         self.lasers.reset(world, self.doc.refs, keep=keep_camera)    # a reset keeps the lasers
         for cb in self.on_document:
@@ -335,13 +331,6 @@ class Editor:
 
     def color_of(self, body):
         return self.colors.get(self.refs.of(body))
-
-    def _color_places(self):
-        """{place in world.bodies: colour} of the coloured bodies (a reset rebuilds the world in
-        the loaded scene's order, so places find the same bodies again)."""
-        index = {b.id: k for k, b in enumerate(self.world.bodies)}
-        return {index[r.obj.id]: c for r, c in self.colors.items()
-                if r.obj is not None and r.obj.alive and r.obj.id in index}
 
     def decor(self) -> Decor:
         """Selection, hover and the active tool's previews for this frame's drawing."""

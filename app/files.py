@@ -96,14 +96,15 @@ class SceneFiles:
         self.confirm_unsaved("Reset to the loaded state?", self.reset)
 
     def reset(self):
-        """Back to the loaded state, keeping the solver choice (the Solver panel: mode, every
-        mode's settings, integrator, broad and narrow phase, sleeping) and the view."""
+        """Back to the loaded state (as the file has it, bodies' colours too: the document is then
+        clean), keeping the solver choice (the Solver panel: mode, every mode's settings,
+        integrator, broad and narrow phase, sleeping) and the view."""
         ed = self.editor
         loaded = ed.doc.loaded
         path = ed.doc.path
         ed.tool.cancel()
         old = ed.world
-        meta = dict(old.metadata)
+        meta = {k: v for k, v in old.metadata.items() if k != "colors"}   # colours: the file's (in loaded)
         world = restore(loaded)
         world.metadata.update(meta)    # name, description, camera: kept by a later save
         keep_solver_choice(old, world)

@@ -22,6 +22,8 @@ from .document import WORLD_FIELDS, restore
 ROOT = Path(__file__).resolve().parent.parent
 #: seconds a cancelled search may take to finish its current run before the process is killed
 CANCEL_GRACE = 3.0
+#: seconds after a kernel's compile the search still shows "compiling" (numba's next may follow)
+COMPILE_GAP = 1.0
 
 
 def scene_copy(editor) -> dict:
@@ -38,14 +40,18 @@ def scene_copy(editor) -> dict:
 
 class Finder:
     """One search at a time.  ``state``: idle, running, cancelling, done, cancelled or error;
-    ``progress`` (stage, done, total); ``result`` (``tune_worker.summary``) when done; ``error``.
-    Fields are written by the reader thread and read by the UI each frame (plain assignments)."""
+    ``progress`` (stage, done, total); ``result`` (``tune_worker.summary``) when done; ``error``;
+    ``compiling`` (kernels numba is compiling in the search's process now: nested, so a depth),
+    ``compiled`` (kernels it has finished) and ``kernel`` (the last one begun).  Fields are
+    written by the reader thread and read by the UI each frame (plain assignments)."""
 
     def __init__(self):
         self.state = "idle"
         self.progress = ("", 0, 0)
         self.result: dict | None = None
         self.error = ""
+        self.compiling, self.compiled, self.kernel = 0, 0, ""
+        self._compile_t = -1e9
         self.options: dict = {}
         self.started = 0.0
         self.seconds = 0.0
@@ -72,6 +78,7 @@ class Finder:
                                 bufsize=1)
         self.options = {"steps": steps, "metric": metric, "budget": budget}
         self.state, self.progress, self.result, self.error = "running", ("starting", 0, 0), None, ""
+        self.compiling, self.compiled, self.kernel = 0, 0, ""
         self.started, self.seconds, self._deadline, self._proc = time.monotonic(), 0.0, None, proc
         proc.stdin.write(json.dumps({"scene": scene, **self.options}) + "\n")
         proc.stdin.flush()
@@ -95,7 +102,9 @@ class Finder:
             rec = json.loads(line)
         except ValueError:
             return
-        if "progress" in rec:
+        if "compile" in rec:
+            self._compile(*rec["compile"])
+        elif "progress" in rec:
             self.progress = tuple(rec["progress"])
         elif "result" in rec:
             self._finish("done", result=rec["result"])
@@ -104,8 +113,21 @@ class Finder:
         elif "cancelled" in rec:
             self._finish("cancelled")
 
+    @property
+    def is_compiling(self) -> bool:
+        """Numba is compiling in the search's process (or finished a kernel under COMPILE_GAP s
+        ago: between two kernels the state does not flicker)."""
+        return self.busy and (self.compiling > 0 or time.monotonic() - self._compile_t < COMPILE_GAP)
+
+    def _compile(self, what, kernel) -> None:
+        self._compile_t = time.monotonic()
+        if what == "start":
+            self.compiling, self.kernel = self.compiling + 1, kernel
+        else:
+            self.compiling, self.compiled = max(0, self.compiling - 1), self.compiled + 1
+
     def _finish(self, state, result=None, error="") -> None:
-        self.result, self.error = result, error
+        self.result, self.error, self.compiling = result, error, 0
         self.seconds = time.monotonic() - self.started
         self.state = state
 

@@ -4,7 +4,10 @@ Reads one JSON line from stdin, ``{"scene": {...}, "steps": N, "metric": M, "bud
 ``physics.tune`` on it in this process (``scheduler="inline"``: a Dask cluster would cost seconds
 to start and two more processes on a machine the window already shares), and writes JSON lines to
 stdout: ``{"progress": [stage, done, total]}`` as runs finish, then one of ``{"result": {...}}``
-(see ``summary``), ``{"error": "..."}`` or ``{"cancelled": true}``.
+(see ``summary``), ``{"error": "..."}`` or ``{"cancelled": true}``.  Around each kernel numba
+really compiles here (a cold cache: the first run compiles the scene's kernels, which takes far
+longer than the run) it writes ``{"compile": ["start" | "end", kernel]}``, so the sandbox shows
+that instead of a bar standing still; a kernel loaded from the cache says nothing.
 
 A line ``cancel`` on stdin, or stdin closing (the sandbox quit or died), stops the search at the
 next run boundary through the tuner's ``cancel`` hook.  A separate process, not a thread: the
@@ -61,6 +64,8 @@ def main() -> int:
     job = json.loads(sys.stdin.readline() or "{}")
     stop = threading.Event()
     threading.Thread(target=_watch, args=(stop,), name="tune-cancel", daemon=True).start()
+    from .compile_worker import listen
+    listen(lambda k: emit({"compile": ["start", k]}), lambda k: emit({"compile": ["end", k]}))
     import physics
     from physics.tuning import Cancelled
     try:

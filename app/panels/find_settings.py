@@ -66,6 +66,7 @@ class FindSettings:
         self.app.ui_values["find"] = {
             "state": f.state, "progress": list(f.progress), "result": f.result, "error": f.error,
             "seconds": f.seconds, "applied": self.applied, "pid": f.pid,
+            "compiling": f.is_compiling, "compiled": f.compiled,
             "options": {"metric": self.metric, "budget": self.budget, "steps": self.steps}}
 
     def options(self, disabled):
@@ -106,6 +107,10 @@ class FindSettings:
         label = f"{stage}: {done} of {total}" if total else f"{stage}..."
         imgui.progress_bar(frac, imgui.ImVec2(-1, 0), label)
         record(self.app, "find:progress")
+        if f.is_compiling:    # a cold cache: the run stands still while numba compiles its kernels
+            wrapped(DIM, f"compiling kernels... ({f.compiled} done, now {f.kernel.rsplit('.', 1)[-1]}; "
+                         "once, then cached)")
+            record(self.app, "find:compiling")
         if f.state == "cancelling":
             imgui.text_colored(DIM, "cancelling (after the current run)...")
         elif imgui.button("Cancel##find"):

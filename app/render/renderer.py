@@ -12,10 +12,9 @@ import time
 import numpy as np
 from OpenGL import GL
 
-from .colors import (AABB_COLOR, COM_COLOR, COM_EDGE, CONTACT_COLOR, DYNAMIC_FILLS, DYNAMIC_LINE, HOVER_TINT,
-                     KINEMATIC_FILL, KINEMATIC_LINE, NORMAL_COLOR, QUADTREE_COLOR, SELECT_FILL, SELECT_LINE, SLEEP_DIM,
-                     SLEEP_FILL, SLEEP_LINE, SPRING_COLOR, SPRING_SELECTED, STATIC_FILL, STATIC_LINE,
-                     VEL_COLOR)
+from .colors import (AABB_COLOR, COM_COLOR, COM_EDGE, CONTACT_COLOR, DYNAMIC_LINE, HOVER_TINT, KINEMATIC_FILL,
+                     KINEMATIC_LINE, NORMAL_COLOR, QUADTREE_COLOR, SELECT_FILL, SELECT_LINE, SLEEP_LINE, SPRING_COLOR, SPRING_SELECTED, STATIC_FILL, STATIC_LINE,
+                     VEL_COLOR, asleep, default_fills)
 from .decor import Decor, Overlays
 from .fans import Fans
 from .geometry import arrows, coils, discs, grid_lines, rects, thick_segments
@@ -55,18 +54,15 @@ class Renderer:
     def body_colors(rd, decor: Decor):
         n = len(rd.kind)
         kind = rd.kind
-        fill = DYNAMIC_FILLS[(rd.ids.astype(np.int64) * 7) % len(DYNAMIC_FILLS)].copy()
+        fill = default_fills(rd.ids)
         line = np.broadcast_to(DYNAMIC_LINE, (n, 4)).copy()
-        asleep = (rd.awake == 0) & (kind == 0)
-        fill[asleep] = SLEEP_FILL
-        line[asleep] = SLEEP_LINE
         if decor.colors:
             own = np.isin(rd.ids, np.fromiter(decor.colors, np.int64))
             idx = np.nonzero(own)[0]
             fill[idx, :3] = np.array([decor.colors[int(i)] for i in rd.ids[idx]], F32)
-            dim = idx[asleep[idx]]            # sleeping: the own colour dimmed towards grey
-            grey = fill[dim, :3].mean(axis=1, keepdims=True)
-            fill[dim, :3] = SLEEP_DIM * (0.5 * fill[dim, :3] + 0.5 * grey)
+        sleeping = (rd.awake == 0) & (kind == 0)
+        fill[sleeping, :3] = asleep(fill[sleeping, :3])
+        line[sleeping] = SLEEP_LINE
         st = kind == 1
         fill[st], line[st] = STATIC_FILL, STATIC_LINE
         kin = kind == 2

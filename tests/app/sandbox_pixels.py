@@ -3,18 +3,33 @@ from pathlib import Path
 
 import numpy as np
 
+from app.body_colors import hex_to_rgb
+from app.render import colors
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
-# colours (see app/render/colors.py): dynamic fills are blue, static grey-blue, selection orange
-def body_pixels(img: np.ndarray, x0=360, x1=1272, y0=0, y1=490) -> int:
+def _known_fills(static=True) -> np.ndarray:
+    """(K, 3) 0-255 fills a body can be drawn in (app/render/colors.py): the default palette and
+    the inspector's, each awake, hovered and asleep, and (``static``) the static grey."""
+    rgb = np.array([hex_to_rgb(h) for h in (*colors.DEFAULT_PALETTE, *colors.PALETTE)])
+    fills = [rgb, rgb + (1.0 - rgb) * colors.HOVER_TINT, colors.asleep(rgb)] + ([colors.STATIC_FILL[None, :3]] if static else [])
+    return np.round(np.concatenate(fills) * 255)
+
+
+def body_mask(img: np.ndarray, x0, x1, y0, y1, static=True, tol=24) -> np.ndarray:
+    """Which pixels of ``img[y0:y1, x0:x1]`` are within ``tol`` (every channel) of a body fill."""
+    area = img[max(0, y0):y1, max(0, x0):x1, :3].astype(int)
+    known = _known_fills(static).astype(int)
+    near = np.abs(area[:, :, None, :] - known[None, None]).max(axis=-1) < tol
+    return near.any(axis=-1)
+
+
+def body_pixels(img: np.ndarray, x0=360, x1=1272, y0=0, y1=490, static=True) -> int:
     """How many pixels in the scene area (default: the free area at 1280x800, right of the side
-    panel and above the stats strip) look like a drawn body."""
-    area = img[y0:y1, x0:x1]
-    r, g, b = area[..., 0], area[..., 1], area[..., 2]
-    blue = (b > 150) & (b > r + 40) & (g > 90)           # dynamic fill / outline
-    grey = (abs(r - 74) < 14) & (abs(g - 83) < 14) & (abs(b - 97) < 14)   # static fill
-    return int(np.count_nonzero(blue | grey))
+    panel and above the stats strip) look like a drawn body's fill (any palette colour, awake or
+    asleep; static grey unless ``static`` is False)."""
+    return int(np.count_nonzero(body_mask(img, x0, x1, y0, y1, static)))
 
 
 def orange_pixels(img, x0, y0, x1, y1) -> int:

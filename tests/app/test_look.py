@@ -1,5 +1,5 @@
 """Issue 16, "a look people enjoy": a body's own colour from the inspector's palette, drawn with
-the state colours kept (selected, hovered, sleeping), and kept by a reset."""
+the state colours kept (selected, hovered, sleeping); a reset goes back to the file's colours."""
 from __future__ import annotations
 
 import json
@@ -53,18 +53,51 @@ def test_own_colour_with_state_colours_kept(launch, tmp_path):
     app.settle()
     hovered = app.screenshot("hovered")
     assert box_pixels(hovered, st, a).mean() > box_pixels(img, st, a).mean() + 8, "no hover tint"
-    # a reset keeps the colour (the body at the same place in the scene)
+    # a reset goes back to the file's colours: the file gave a none, so the unsaved green goes
     app.xdo("mousemove", 700, 120)
     app.settle()
-    app.key("r")                        # the colour is an edit of the scene: reset asks first
+    reset_discarding(app)
+    st = app.settle()
+    img = app.screenshot("after_reset")
+    assert body(st, "a")["color"] is None, "the reset kept an unsaved colour"
+    assert near(box_pixels(img, st, body(st, "a")), GREEN) < 0.05, "the reset drew the unsaved colour"
+    # a saved colour is the file's: a reset keeps it and drops a later, unsaved one
+    set_swatch(app, body(st, "a"), 3)
+    app.key("ctrl+s")
+    st = app.wait(lambda s: not s["dirty"], 10, "the save")
+    set_swatch(app, body(st, "b"), 1)
+    app.xdo("mousemove", 700, 120)
+    app.settle()
+    reset_discarding(app)
+    st = app.settle()
+    img = app.screenshot("after_save_reset")
+    assert body(st, "a")["color"] == "#81b29a" and body(st, "b")["color"] is None
+    assert near(box_pixels(img, st, body(st, "a")), GREEN) > 0.8, "the reset lost a's saved colour"
+    assert near(box_pixels(img, st, body(st, "b")), CORAL) < 0.05, "the reset kept b's unsaved colour"
+    assert not st["gl_errors"]
+
+
+def set_swatch(app, b, k):
+    """Select body ``b`` and click the inspector's swatch ``k`` (app.render.colors.PALETTE), then
+    clear the selection."""
+    app.click(*map(int, b["screen"]))
+    st = app.wait(lambda s: s["selection"] == [b["id"]], 10, f"{b['name']} selected")
+    st = app.settle()
+    app.click(*centre(st["ui_rects"][f"inspector:swatch:{k}"]))
+    app.wait(lambda s: body(s, b["name"])["color"] is not None and s["dirty"], 10, "the colour set")
+    app.xdo("mousemove", 700, 120)
+    app.settle()
+    app.key("Escape")
+    app.wait(lambda s: not s["selection"], 10, "the selection cleared")
+
+
+def reset_discarding(app):
+    """R with unsaved edits asks first: discard them; the document is then clean at time 0."""
+    app.key("r")
     st = app.wait(lambda s: s["dialog"] == "Unsaved edits", 10, "the question")
     st = app.settle()
     app.click(*centre(st["ui_rects"]["dialog:Discard edits"]))
-    st = app.wait(lambda s: s["time"] == 0.0 and not s["dirty"], 10, "the reset")
-    st = app.settle()
-    img = app.screenshot("after_reset")
-    assert near(box_pixels(img, st, body(st, "a")), GREEN) > 0.8, "the reset lost a's colour"
-    assert not st["gl_errors"]
+    app.wait(lambda s: s["time"] == 0.0 and not s["dirty"], 10, "the reset")
 
 
 CORAL = (224, 122, 95)     # "#e07a5f", the scene file's colour for b
