@@ -35,8 +35,20 @@ def run(launch, tmp_path, name, env):
     return app, st, img
 
 
-def test_multisampled_by_default(launch, tmp_path):
-    app, st, img = run(launch, tmp_path, "msaa", {})
+def test_software_gl_is_plain_by_default(launch, tmp_path):
+    """llvmpipe shades every sample on the CPU: by default the sandbox does not multisample there."""
+    app, st, img = run(launch, tmp_path, "default", {})
+    cfg = st["gl_config"]
+    assert cfg["msaa"] is False and cfg["samples"] == 0 and cfg["samples_requested"] == 0, cfg
+    assert "software renderer (llvmpipe" in cfg["fallback"], cfg
+    assert "multisampling off (STELKROPP_MSAA_SAMPLES=4 turns it on)" in app.logtext()
+    cx, cy = box_centre(st)
+    centre = img[cy - 5:cy + 5, cx - 5:cx + 5].reshape(-1, 3).mean(axis=0)
+    assert abs(centre - np.array([74, 83, 97])).max() < 20, f"the scene is not drawn: {centre}"
+
+
+def test_multisampled_when_asked(launch, tmp_path):
+    app, st, img = run(launch, tmp_path, "msaa", {"STELKROPP_MSAA_SAMPLES": "4"})
     cfg = st["gl_config"]
     # measured here: Xvfb + Mesa llvmpipe offer a 4-sample GLX visual (screen.get_best_config)
     assert cfg["msaa"] and cfg["samples_requested"] == 4, f"4x multisampling refused: {cfg}"
