@@ -62,7 +62,10 @@ def stars(draw):
     n = draw(st.integers(5, 40))
     angles = sorted(draw(st.lists(st.floats(0, 2 * math.pi, exclude_max=True), min_size=n, max_size=n,
                                   unique=True)))
-    if min(np.diff(angles + [angles[0] + 2 * math.pi])) < 1e-2:
+    gaps = np.diff(angles + [angles[0] + 2 * math.pi])
+    # A polygon whose vertices circle the origin in angle order is simple only when the origin
+    # sees every edge from inside: each angular gap must stay below pi (with margin).
+    if gaps.min() < 1e-2 or gaps.max() > 0.9 * math.pi:
         angles = list(np.linspace(0, 2 * math.pi, n, endpoint=False))
     radii = draw(st.lists(st.floats(0.2, 3.0), min_size=n, max_size=n))
     return [(r * math.cos(a), r * math.sin(a)) for r, a in zip(radii, angles)]
