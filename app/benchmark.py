@@ -37,10 +37,32 @@ class FrameBenchmark:
         med = {k: float(np.median([b[k] for b in bench])) for k in keys}
         mean = {k: float(np.mean([b[k] for b in bench])) for k in keys}
         n = len(window.world.bodies)
-        print(f"benchmark: {len(bench)} frames, {n} bodies, solver {window.world.solver}")
+        print(f"benchmark: {len(bench)} frames, {n} bodies, solver {window.world.solver}, "
+              f"load average {load_average()}")
         print("  median ms: " + "  ".join(f"{k} {med[k]:.2f}" for k in keys))
         print("  mean ms:   " + "  ".join(f"{k} {mean[k]:.2f}" for k in keys))
+        print("  median parts ms: " + "  ".join(f"{k} {v:.2f}" for k, v in parts(bench).items()))
         render = med['upload'] + med['draw'] + med['ui']
         print(f"  render-only frame (upload+draw+ui): {render:.2f} ms "
               f"= {1000.0 / max(1e-6, render):.0f} fps; "
               f"with physics: {1000.0 / max(1e-6, med['frame']):.0f} fps")
+
+
+def parts(bench) -> dict:
+    """Medians of the finer split: draw without the swap (GL calls), the swap (where llvmpipe
+    rasterises the scene and imgui), the Plot tab's imgui building (part of ui), and the rest
+    of the frame (stats sampling, the world-bound check, hover, autosave)."""
+    def med(f):
+        return float(np.median([f(b) for b in bench]))
+    return {"draw-calls": med(lambda b: b["draw"] - b.get("swap", 0.0)),
+            "swap": med(lambda b: b.get("swap", 0.0)),
+            "plot-ui": med(lambda b: b.get("plot", 0.0)),
+            "other": med(lambda b: b["frame"] - b["physics"] - b["upload"] - b["draw"] - b["ui"])}
+
+
+def load_average() -> str:
+    """The 1, 5 and 15 minute load averages (other jobs on the machine slow llvmpipe's threads)."""
+    try:
+        return " ".join(open("/proc/loadavg").read().split()[:3])
+    except OSError:
+        return "unknown"
