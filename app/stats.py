@@ -67,7 +67,8 @@ class StatsSampler:
 
 class FrameTimes:
     """The split of one frame (physics, upload, draw, ui, frame; ms): the last frame and a
-    running average (weight 0.1 per frame), and frames per second."""
+    running average (weight 0.1 per frame), and frames per second.  ``last`` also holds the
+    finer parts the frame benchmark reports (``swap``, ``plot``: the Plot tab's share of ``ui``)."""
 
     KEYS = ("physics", "upload", "draw", "ui", "frame")
 
@@ -80,13 +81,14 @@ class FrameTimes:
         a = 0.1
         for k in self.KEYS:
             self.avg[k] = (1 - a) * self.avg[k] + a * ms[k]
-        self.last = {k: ms[k] for k in self.KEYS}
+        self.last = dict(ms)
         if real_dt > 0:
             self.fps = 0.9 * self.fps + 0.1 / real_dt if self.fps else 1.0 / real_dt
 
     def add_swap(self, flip_ms: float) -> None:
         """llvmpipe rasterises when the frame is swapped: count the swap as drawing."""
         if self.last:
+            self.last["swap"] = flip_ms
             self.last["draw"] += flip_ms
             self.last["frame"] += flip_ms
             self.avg["draw"] += 0.1 * flip_ms

@@ -192,6 +192,7 @@ class Sandbox(pyglet.window.Window):
             GL.glFinish()
         draw_ms = (time.perf_counter() - t_draw) * 1e3   # + the buffer swap, added by the loop
         t_ui = time.perf_counter()
+        self.panels.plot.ms = 0.0
         self.draw_ui(ready)
         if PROFILE:
             GL.glFinish()
@@ -200,7 +201,7 @@ class Sandbox(pyglet.window.Window):
         if err != GL.GL_NO_ERROR:
             self.gl_errors.append(f"frame {self.frame_no}: GL error 0x{err:x}")
         self.times.record(real_dt, physics=phys_ms, upload=upload_ms, draw=draw_ms, ui=ui_ms,
-                          frame=(time.perf_counter() - t_start) * 1e3)
+                          frame=(time.perf_counter() - t_start) * 1e3, plot=self.panels.plot.ms)
         if ready:
             self.editor.sync_colors()     # the autosave keeps the bodies' colours too
             self.autosaver.tick(self.editor.doc, busy=self.editor.tools["select"].joint is not None)

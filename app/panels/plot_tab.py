@@ -21,12 +21,14 @@ def export_dir() -> Path:
 
 
 class PlotTab:
-    """``last_csv``: the path of the last export (None before one)."""
+    """``last_csv``: the path of the last export (None before one); ``ms``: the time building
+    the tab took this frame (0 when not drawn; the window resets it; the frame benchmark reports it)."""
 
     def __init__(self, app):
         self.app = app
         self.plots: dict[str, TimePlot] = {}
         self.last_csv = None
+        self.ms = 0.0
 
     @property
     def open(self) -> bool:
@@ -39,6 +41,13 @@ class PlotTab:
         self.app.panels.stats.show_plot = True
 
     def contents(self):
+        t0 = time.perf_counter()
+        try:
+            self._contents()
+        finally:
+            self.ms += (time.perf_counter() - t0) * 1e3
+
+    def _contents(self):
         app = self.app
         rec = app.recorder
         if imgui.button("Export CSV"):
