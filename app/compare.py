@@ -26,7 +26,7 @@ LANE_COLORS = ((0.36, 0.62, 0.95, 1.0), (1.0, 0.60, 0.22, 1.0), (0.45, 0.92, 0.5
                (1.0, 0.40, 0.65, 1.0))
 MAX_RIVALS = len(LANE_COLORS) - 1
 MAX_CATCH_UP = 8        # steps a rival may take in one frame to catch up with the main world
-PEN_EVERY = 6           # frames between penetration samples (world.contacts() builds Python objects)
+PEN_EVERY = 6           # frames between penetration samples of each lane (world.contact_depths())
 
 
 class LaneStats(Stats):
@@ -62,7 +62,8 @@ def total_energy(world) -> float:
 
 def max_depth(world) -> float:
     """The deepest touching contact of the last step (m, >= 0)."""
-    return max((c.depth for c in world.contacts()), default=0.0)
+    d = world.contact_depths()
+    return float(d.max()) if len(d) else 0.0
 
 
 def rms_drift(a, b, dynamic) -> float:

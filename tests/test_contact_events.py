@@ -2,6 +2,8 @@
 sleeping, removal mid-contact and solver-mode switches; replaced each step; snapshots."""
 import math
 
+import numpy as np
+
 import pytest
 
 import physics
@@ -213,3 +215,21 @@ def test_a_refused_step_leaves_the_last_events_standing():
     for i in range(second, len(seq)):
         w.step()
         assert _seen(w.contact_events()) == seq[i]
+
+
+def test_contact_depths_are_the_contacts_depths():
+    """``contact_depths()`` is the numpy readout of ``[c.depth for c in contacts()]``: same
+    rows, same order, the same deepest-point depth (the sandbox's stats read it every frame)."""
+    w = physics.World(sleeping=False)
+    w.add_body(physics.Polygon.box(20, 1), kind="static", position=(0, -0.5))
+    for i in range(6):
+        for j in range(6 - i):
+            w.add_body(physics.Polygon.box(1, 1), position=(j - 2.5 + 0.5 * i, 0.5 + i), angle=0.01 * j)
+    w.add_body(physics.Circle(0.5), position=(6, 3))    # apart: speculative rows, not touching
+    assert len(w.contact_depths()) == 0
+    for _ in range(40):
+        w.step()
+    want = [c.depth for c in w.contacts()]
+    got = w.contact_depths()
+    assert len(want) >= 20 and got.dtype == np.float64
+    assert got.tolist() == want
