@@ -145,12 +145,10 @@ class BodiesMixin:
     def _touch_neighbours(self, s: int) -> None:
         """Wake whatever touches slot s (it is about to disappear or change)."""
         c = self._contacts
-        for k in range(c.n):
-            a, b = int(c.cur.a[k]), int(c.cur.b[k])
-            if a == s:
-                self._touched(b)
-            elif b == s:
-                self._touched(a)
+        a, b = c.cur.a[: c.n], c.cur.b[: c.n]
+        # the contacts of s found by the arrays, not a Python pass over every contact
+        for k in np.flatnonzero((a == s) | (b == s)):
+            self._touched(int(b[k]) if a[k] == s else int(a[k]))
 
     def wake_all(self) -> None:
         """Wake every body (and forget the sleeping islands)."""

@@ -192,14 +192,23 @@ class JointsMixin:
             self._remove_joint(item)
             return
         if isinstance(item, Body) and item.world is self and item.alive:
-            for j in [j for j in self._joint_handles.values() if j.body_a is item or j.body_b is item]:
-                self._remove_joint(j)
+            for oid in self._joint_ids_on(item._s):
+                self._remove_joint(self._joint_handles[oid])
             s, last = item._s, self._bodies.n - 1
             super().remove(item)
             if s != last:
                 self._joints.remap_removed_body(s, last)
             return
         super().remove(item)
+
+    def _joint_ids_on(self, s: int) -> list[int]:
+        """Ids of the joints on body slot ``s``, in creation order (the handles' order): the
+        table's columns find them without a pass over every handle (rain removes 275 bodies
+        among 10,000 joints per event), and the order matters, since each removal renumbers."""
+        n = self._joints.n
+        J = self._joints.view
+        hit = (J.a[:n] == s) | (J.b[:n] == s)
+        return sorted(int(i) for i in J.id[:n][hit])
 
     def _remove_joint(self, joint: Joint) -> None:
         if not isinstance(joint, Joint) or joint._world is not self or not joint.alive:
