@@ -32,13 +32,14 @@ def _bodies(app):
     out = []
     for b in app.world.bodies:
         sp = app.camera.to_screen(b.position)
+        rgb = app.editor.color_of(b)
         out.append({"id": b.id, "name": b.name, "kind": b.kind, "position": b.position, "angle": b.angle,
                     "velocity": b.velocity, "angular_velocity": b.angular_velocity,
                     "screen": [float(sp[0]), float(app.height - sp[1])],
                     "shape": b.shape.kind, "density": b.density,
                     "vertices": 0 if isinstance(b.shape, physics.Circle) else len(b.shape.vertices),
                     "fixtures": [f.shape.kind for f in b.fixtures], "mass": b.mass,
-                    "awake": b.awake, "color": None if app.editor.color_of(b) is None else rgb_to_hex(app.editor.color_of(b))})
+                    "awake": b.awake, "color": None if rgb is None else rgb_to_hex(rgb)})
     return out
 
 

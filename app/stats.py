@@ -53,7 +53,7 @@ class StatsSampler:
         self.info: dict = {}
         self.last_contacts = (0, 0.0)    # (count, deepest penetration in m)
 
-    def sample(self, world, phys_ms: float, steps: int, frame_no: int, n_bodies: int) -> None:
+    def sample(self, world, phys_ms: float, steps: int, frame_no: int) -> None:
         if frame_no % 6 == 0 or not self.stats.n:
             d = world.contact_depths()     # numpy: no Python object per contact
             self.last_contacts = (len(d), float(d.max()) if len(d) else 0.0)

@@ -170,7 +170,7 @@ class Sandbox(pyglet.window.Window):
             self.keep_timeline()
             phys_ms, steps = self.sim.advance(real_dt, velocities=self.overlays.velocities)
             rd = self.check_bound() if steps else None
-            self.sampler.sample(self.world, phys_ms, steps, self.frame_no, len(self.rd_ids))
+            self.sampler.sample(self.world, phys_ms, steps, self.frame_no)
             t_cmp = time.perf_counter()
             self.compare.update(phys_ms, steps)
             self.recorder.sample(self.world)

@@ -73,6 +73,15 @@ def impulse_scale(world) -> float:
     return float(world._pipeline.ctx.get("dt")) / c.span
 
 
+def _touching(world) -> np.ndarray:
+    """(rows, 2) bool: which points of each contact row of the last step touch (depth > -slop);
+    the one rule ``contacts()`` and ``contact_depths()`` report by."""
+    c = world._store.contacts
+    d = c.cur.depth[:c.n]
+    live = np.arange(d.shape[1])[None, :] < c.cur.count[:c.n, None]
+    return live & (d > -world.linear_slop)
+
+
 def contacts(world) -> list:
     """Touching contacts of the last step (normal from body_a to body_b, depth > -slop)."""
     c = world._store.contacts
@@ -80,11 +89,9 @@ def contacts(world) -> list:
     out = []
     ids = world._store.bodies.view.id
     fixtures = world._fixture_handles
-    for k in range(c.n):
-        m = int(c.cur.count[k])
-        keep = [p for p in range(m) if c.cur.depth[k, p] > -world.linear_slop]
-        if not keep:
-            continue
+    touch = _touching(world)
+    for k in np.flatnonzero(touch.any(axis=1)):
+        keep = np.flatnonzero(touch[k]).tolist()
         key = int(c.cur.key[k])  # (fixture id a << 32) | fixture id b (narrowphase/kernel.py)
         out.append(Contact(world._handles[int(ids[c.cur.a[k]])], world._handles[int(ids[c.cur.b[k]])],
                            [tuple(map(float, c.cur.point[k, p])) for p in keep],
@@ -100,14 +107,9 @@ def contact_depths(world) -> np.ndarray:
     """The depth (m) of each touching contact of the last step, as ``contacts()`` reports it
     (the deepest point of each row with depth > -slop), without building a Python object per
     contact: numpy over the contact table, for per-frame readouts of large worlds."""
-    c = world._store.contacts
-    n = c.n
-    if n == 0:
-        return np.zeros(0)
-    d = c.cur.depth[:n]
-    live = np.arange(d.shape[1])[None, :] < c.cur.count[:n, None]
-    deepest = np.where(live, d, -np.inf).max(axis=1)
-    return deepest[deepest > -world.linear_slop]
+    touch = _touching(world)
+    d = np.where(touch, world._store.contacts.cur.depth[:len(touch)], -np.inf)
+    return d.max(axis=1)[touch.any(axis=1)]
 
 
 def query_point(world, p):
