@@ -19,7 +19,7 @@ from physics import options
 
 from . import compile_units
 from .document import restore, snapshot
-from .stats import Stats
+from .stats import Stats, deepest
 
 #: lane colours (RGBA): the main world, then the rivals (ghost outlines, split panes, plot lines)
 LANE_COLORS = ((0.36, 0.62, 0.95, 1.0), (1.0, 0.60, 0.22, 1.0), (0.45, 0.92, 0.55, 1.0),
@@ -62,8 +62,7 @@ def total_energy(world) -> float:
 
 def max_depth(world) -> float:
     """The deepest touching contact of the last step (m, >= 0)."""
-    d = world.contact_depths()
-    return float(d.max()) if len(d) else 0.0
+    return deepest(world.contact_depths())
 
 
 def rms_drift(a, b, dynamic) -> float:

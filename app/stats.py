@@ -42,6 +42,11 @@ class Stats:
         self.n = self.i = 0
 
 
+def deepest(depths) -> float:
+    """The largest of ``world.contact_depths()`` (m), 0 when nothing touches."""
+    return float(depths.max()) if len(depths) else 0.0
+
+
 class StatsSampler:
     """One sample per frame: step time, energies, momentum; the contact count and deepest
     penetration (``world.contact_depths()``, numpy) and ``world.info()`` every sixth frame.
@@ -56,7 +61,7 @@ class StatsSampler:
     def sample(self, world, phys_ms: float, steps: int, frame_no: int) -> None:
         if frame_no % 6 == 0 or not self.stats.n:
             d = world.contact_depths()     # numpy: no Python object per contact
-            self.last_contacts = (len(d), float(d.max()) if len(d) else 0.0)
+            self.last_contacts = (len(d), deepest(d))
             self.info = world.info()
         p = world.linear_momentum()
         self.stats.add(t=time.monotonic(), step_ms=phys_ms / max(steps, 1), ke=world.kinetic_energy(),
