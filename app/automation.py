@@ -70,6 +70,7 @@ def status(app) -> dict:
     w, ed, small = app.world, app.editor, len(app.rd_ids) <= 300
     return {
         "frame": app.frame_no, "ready": app.warmup.ready, "warm_finished": app.warmup.finished,
+        "joints_ready": app.warmup.joints_ready(w.solver, w.integrator),
         "progress": app.warmup.progress()[0], "kernels_compiled": app.warmup.kernels_compiled(),
         "t_gate": app.warmup.t_gate,
         "warm_errors": app.warmup.errors, "running": app.sim.running, "solver": w.solver,

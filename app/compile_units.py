@@ -11,8 +11,9 @@ the argument types matter to the compiler, the results are thrown away.
 Unit names: ``broad:<broadphase>``, ``narrow``, ``solve:<solver>:<integrator>``, ``frame``, ``extras``
 (the quadtree overlay), ``step:<solver>:<integrator>:<broadphase>`` (a whole step: what is left),
 ``joints:<solver>:<integrator>`` (the joint stage, which a step compiles only once a world has a
-joint: loaded before the scene runs, since the mouse drag is a joint, and for a mode switched to
-before a world with joints steps in it, so no step stops the window to compile).
+joint: loaded before a scene with joints runs, else compiled by the helper right after the gate,
+since the mouse drag is a joint; and for a mode switched to before a world with joints steps in it,
+so no step stops the window to compile).
 """
 from __future__ import annotations
 
@@ -122,8 +123,8 @@ def gate_units(solver: str, integrator: str, broadphase: str) -> tuple[list[str]
 
 def background_units(solver: str, integrator: str, broadphase: str) -> list[str]:
     """Everything else the sandbox can switch to, the likeliest first: the other broad phases,
-    the quadtree overlay, then the other solver modes.  (The open mode's joint stage is in the
-    gate: the mouse drag needs it.)"""
+    the quadtree overlay, then the other solver modes.  (The open mode's joint stage is the
+    gate's for a scene with joints, else the first background unit: app.warmup.)"""
     out = [f"broad:{bp}" for bp in ("brute", "sweep", "quadtree") if bp != broadphase]
     out.append("extras")
     out += [f"solve:{s}:{integrator}" for s in options.SOLVERS if s != solver]

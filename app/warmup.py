@@ -20,6 +20,7 @@ while this process compiles (see ``busy``).
 """
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import threading
@@ -71,10 +72,17 @@ class Warmup:
         self.cache = compile_units.cache_dir()
         mine, theirs = compile_units.gate_units(*self.key)
         self.final = "step:" + ":".join(self.key)
-        # then the mode's joint stage: a scene with joints needs it, and so does the mouse drag (the
-        # core's mouse joint) in any scene, so it is part of every gate
-        self.after_final = [compile_units.joints_unit(self.solver, self.integrator)]
+        # the mode's joint stage is the largest unit (250 CPU s cold, measured: it compiles the step
+        # again with the joint table).  A scene with joints waits for it; any other scene plays
+        # without it, while the helper compiles it first of the background units (the first mouse
+        # drag, a joint, waits for it: app/simulation.py)
+        joints = compile_units.joints_unit(self.solver, self.integrator)
+        self.after_final = [joints] if world.joints else []
         background = [u for u in compile_units.background_units(*self.key) if not self.cached(u)]
+        if not world.joints and not self.cached(joints):
+            background.insert(0, joints)
+        self.joints = joints
+        self.background = background
         if os.environ.get("STELKROPP_BACKGROUND_COMPILE", "1") == "0":
             background = []     # other modes only when switched to (e.g. a CI box with one core)
         self.warm = all(self.cached(u) for u in mine + theirs + [self.final] + self.after_final)
@@ -142,11 +150,13 @@ class Warmup:
         with self._cv:
             self._cv.notify_all()
 
-    def _unit(self, unit: str) -> None:
-        """Compile or load ``unit`` here, under the physics lock."""
+    def _unit(self, unit: str, locked: bool = True) -> None:
+        """Compile or load ``unit`` here, under the physics lock unless not ``locked``: after the
+        gate the scene runs, and a unit's probe world shares nothing with it (numba's own lock
+        serialises compiles), so a rival mode loading here leaves the main world stepping."""
         self.stage = unit
         try:
-            with compile_units.unit_lock(unit), self.lock:
+            with compile_units.unit_lock(unit), (self.lock if locked else contextlib.nullcontext()):
                 compile_units.run(unit)
         except Exception as exc:  # noqa: BLE001  (a broken mode must not stop the others)
             self.errors.append(f"{unit}: {exc}")
@@ -156,12 +166,12 @@ class Warmup:
             compile_units.mark(unit)
             self.loaded.add(unit)
 
-    def _wait_helper(self, units) -> None:
+    def _wait_helper(self, units, locked: bool = True) -> None:
         """Wait until the helper settled ``units``; compile here the ones it could not."""
         units = [u for u in units if not compile_units.cached(u)]
         if self.helper is None:
             for u in units:
-                self._unit(u)
+                self._unit(u, locked)
             return
         for u in units:
             self.helper.push(u, first=True)
@@ -169,7 +179,7 @@ class Warmup:
             self._cv.wait_for(lambda: all(self.helper.settled(u) for u in units))
         for u in units:
             if u not in self.helper.done:
-                self._unit(u)     # the helper failed or died: compile it here
+                self._unit(u, locked)     # the helper failed or died: compile it here
 
     def frame_drawn(self) -> None:
         """The window has drawn its first frame: this process may start compiling (the helper
@@ -197,6 +207,8 @@ class Warmup:
         self._ready = True
         if self.helper is not None and self.warm:
             self._start_helper()       # the background units, now that the scene runs
+        if self.cached(self.joints):
+            self.want_unit(self.joints)    # on disk: loaded now, so the first drag does not wait
         self._serve()
 
     def _save_counts(self, compiled_here: int) -> None:
@@ -227,20 +239,20 @@ class Warmup:
             if unit is not None:      # the window waits for it: here now, unless the helper is on it
                 self.label = unit
                 if self.helper is not None and not self.helper.claim(unit):
-                    self._wait_helper([unit])
-                self._unit(unit)
+                    self._wait_helper([unit], locked=False)
+                self._unit(unit, locked=False)
                 if unit in later:
                     later.remove(unit)
                 continue
             if key is None:
                 unit = settled()[0]
                 later.remove(unit)
-                self._unit(unit)
+                self._unit(unit, locked=False)
                 continue
             solver, integrator, bp = key
             self.label = f"{solver} ({integrator})"
-            self._wait_helper([f"solve:{solver}:{integrator}", f"broad:{bp}"])
-            self._unit("step:" + ":".join(key))
+            self._wait_helper([f"solve:{solver}:{integrator}", f"broad:{bp}"], locked=False)
+            self._unit("step:" + ":".join(key), locked=False)
             self.warmed.add(key)
 
     # -- what the window asks --------------------------------------------------------

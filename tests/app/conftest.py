@@ -113,8 +113,11 @@ class AppProc:
                              f"{ {k: v for k, v in self.status().items() if k != 'bodies'} }\n{self.logtext()}"
                              f"\n{self.x_state()}")
 
-    def wait_ready(self, frames=20):
-        st = self.wait(lambda s: s.get("ready"), READY_TIMEOUT, "the kernels to compile")
+    def wait_ready(self, frames=20, joints=True):
+        """Wait until the scene runs (and, with ``joints``, the mode's joint stage is loaded too: a
+        scene without joints plays before it, and a test's first drag would wait for it)."""
+        st = self.wait(lambda s: s.get("ready") and (s.get("joints_ready") or not joints), READY_TIMEOUT,
+                       "the kernels to compile")
         f0 = st["frame"]
         return self.wait(lambda s: s["frame"] >= f0 + frames, 60, f"{frames} frames")
 

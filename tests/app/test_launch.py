@@ -69,3 +69,71 @@ def test_preview_render_data_matches_the_kernels():
                     np.testing.assert_allclose(a[f], b[f], rtol=0, atol=1e-12, err_msg=f"{path.name}: {name}.{f}")
                 continue
             np.testing.assert_allclose(a, b, rtol=0, atol=1e-12, err_msg=f"{path.name}: {name}")
+
+
+def test_the_joint_stage_holds_up_only_scenes_with_joints(tmp_path, monkeypatch):
+    """The joint stage is the largest compile unit (250 CPU s cold, app/warmup.py): a scene
+    without joints plays before it (it is the first background unit, for the mouse drag), a
+    scene with joints waits for it."""
+    import threading
+
+    import physics
+    from app import compile_units
+    from app.warmup import Warmup
+    monkeypatch.setenv("STELKROPP_BACKGROUND_COMPILE", "1")
+    monkeypatch.setattr(compile_units, "cached", lambda unit: False)     # a cold cache
+    plain = physics.load_scene(ROOT / "scenes" / "default.json")
+    assert not plain.joints
+    w = Warmup(plain, threading.Lock(), helper=False)
+    assert w.joints == compile_units.joints_unit(plain.solver, plain.integrator)
+    assert w.joints not in w.after_final and w.background[0] == w.joints
+    hinged = physics.World()
+    arm = hinged.add_body(physics.Polygon.box(2, 0.2), position=(1, 0))
+    hinged.add_joint("revolute", arm, None, anchor=(0, 0))
+    w2 = Warmup(hinged, threading.Lock(), helper=False)
+    assert w2.after_final == [w2.joints] and w2.joints not in w2.background
+
+
+def test_a_rival_mode_loads_while_the_scene_steps(monkeypatch):
+    """The gate's units hold the physics lock (nothing steps before the scene can run); after it,
+    a mode switched to (a comparison's rival) loads without it, so the main world keeps stepping
+    ("the main world stalls while a rival mode compiles")."""
+    import threading
+
+    import physics
+    from app import compile_units
+    from app.warmup import Warmup
+    lock = threading.Lock()
+    held, release = {}, threading.Event()
+
+    def fake_run(unit):
+        held[unit] = lock.locked()
+        if unit.startswith("step:impulse"):
+            release.wait(30)
+    monkeypatch.setattr(compile_units, "run", fake_run)
+    monkeypatch.setattr(compile_units, "cached", lambda unit: False)
+    monkeypatch.setattr(compile_units, "mark", lambda unit: None)
+    w = Warmup(physics.load_scene(ROOT / "scenes" / "default.json"), lock, helper=False)
+    w.frame_drawn()
+    w.start()
+    w.thread.join(0.0)
+    for _ in range(300):
+        if w.ready:
+            break
+        threading.Event().wait(0.01)
+    assert w.ready and all(held[u] for u in [*w.mine, w.final]), held
+    w.prioritize("impulse", w.integrator)
+    for _ in range(300):
+        if any(u.startswith("step:impulse") for u in held):
+            break
+        threading.Event().wait(0.01)
+    rival = next(u for u in held if u.startswith("step:impulse"))
+    assert not held[rival] and lock.acquire(blocking=False), "the rival's load holds the physics lock"
+    lock.release()
+    assert not w.can_step("impulse", w.integrator)
+    release.set()
+    for _ in range(300):
+        if w.can_step("impulse", w.integrator):
+            break
+        threading.Event().wait(0.01)
+    assert w.can_step("impulse", w.integrator)
