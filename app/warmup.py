@@ -72,19 +72,19 @@ class Warmup:
         self.cache = compile_units.cache_dir()
         mine, theirs = compile_units.gate_units(*self.key)
         self.final = "step:" + ":".join(self.key)
-        # the mode's joint stage is the largest unit (250 CPU s cold, measured: it compiles the step
-        # again with the joint table).  A scene with joints waits for it; any other scene plays
-        # without it, while the helper compiles it first of the background units (the first mouse
-        # drag, a joint, waits for it: app/simulation.py)
+        # the mode's joint stage is the largest unit (182 CPU s cold, measured alone: it compiles
+        # the step again with the joint table).  A scene with joints waits for it; any other scene
+        # plays without it, while the helper compiles it first of the background units (the first
+        # mouse drag, a joint, waits for it: app/simulation.py)
         joints = compile_units.joints_unit(self.solver, self.integrator)
         self.after_final = [joints] if world.joints else []
         background = [u for u in compile_units.background_units(*self.key) if not self.cached(u)]
-        if not world.joints and not self.cached(joints):
-            background.insert(0, joints)
-        self.joints = joints
-        self.background = background
         if os.environ.get("STELKROPP_BACKGROUND_COMPILE", "1") == "0":
             background = []     # other modes only when switched to (e.g. a CI box with one core)
+        if not world.joints and not self.cached(joints):
+            background.insert(0, joints)    # the open mode's own: the drag needs it in any case
+        self.joints = joints
+        self.background = background
         self.warm = all(self.cached(u) for u in mine + theirs + [self.final] + self.after_final)
         if self.warm:
             mine, theirs = [], []      # all on disk: one probe step here loads it all, at once
