@@ -23,6 +23,7 @@ from __future__ import annotations
 import copy as _copy
 
 _FRONTENDS: dict = {}
+_ORIGINAL: list = []      # numba's own InlineWorker.inline_function, once patched (for unpatched())
 APPLIED = False
 
 
@@ -32,12 +33,13 @@ class _BlockCopier:
     a block of another scope)."""
 
     def __init__(self):
+        from numba.core import ir
+        self._block = ir.Block
         self._memo: dict = {}
         self._scope = None
 
     def deepcopy(self, x, memo=None):
-        from numba.core import ir
-        if memo is not None or not isinstance(x, ir.Block):
+        if memo is not None or not isinstance(x, self._block):
             return _copy.deepcopy(x, memo)
         if x.scope is not self._scope or id(x) in self._memo:
             self._memo, self._scope = {}, x.scope
@@ -72,8 +74,6 @@ class unpatched:
         from numba.core import inline_closurecall as ic
         ic.copy, ic.InlineWorker.inline_function = self._saved
 
-
-_ORIGINAL: list = []
 
 
 def apply() -> bool:

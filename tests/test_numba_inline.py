@@ -6,6 +6,7 @@ runs once, not once per call site and nesting level)."""
 from __future__ import annotations
 
 import collections
+import contextlib
 import re
 
 import numpy as np
@@ -59,11 +60,7 @@ def _compile_counting(unpatched: bool):
     ic.InlineWorker.run_untyped_passes = counting
     _numba_inline._FRONTENDS.clear()
     try:
-        if unpatched:
-            with _numba_inline.unpatched():
-                top = _build()
-                top.compile("f8(f8[:, :])")
-        else:
+        with _numba_inline.unpatched() if unpatched else contextlib.nullcontext():
             top = _build()
             top.compile("f8(f8[:, :])")
     finally:
