@@ -28,6 +28,8 @@ def main(argv=None) -> int:
     ap.add_argument("--out", default=str(DOC))
     ap.add_argument("--samples", action="store_true", help="only Box2D v3's samples beside Box2D (samples.py)")
     ap.add_argument("--only", help="with --samples: figure functions whose name contains this (nothing written)")
+    ap.add_argument("--set", action="append", metavar="NAME=VALUE", dest="settings",
+                    help="with --samples: a soft_step setting instead of its default (repeatable; nothing written)")
     ap.add_argument("--box2d-live", action="store_true", help="with --samples: run Box2D v3 now, not its recorded figures")
     ap.add_argument("--scheduler", help="a Dask scheduler address (default: a local cluster, one one-thread "
                                         "worker per core), or 'inline' (this process)")
@@ -35,8 +37,12 @@ def main(argv=None) -> int:
     ap.add_argument("--resume", action="store_true", help="with --results: skip the probes already in FILE")
     a = ap.parse_args(argv)
     if a.samples:
-        from .samples import main_samples
-        return main_samples(a.out, a.only, a.box2d_live)
+        from .samples import main_samples, parse_settings
+        try:
+            settings = parse_settings(a.settings)
+        except ValueError as exc:
+            ap.error(str(exc))
+        return main_samples(a.out, a.only, a.box2d_live, settings)
     modes = [m for m in a.modes.split(",") if m] or physics.solvers_available()
     wanted = [n for n in a.probes.split(",") if n]
     known = [p.measure.__name__ for p in PROBES]

@@ -1,6 +1,6 @@
 """Box2D v3's Stacking / Robustness samples and issue 18's cases in Stelkropp, beside Box2D v3.
 
-    python -m bench.reliability --samples [--only card_house] [--box2d-live]
+    python -m bench.reliability --samples [--only card_house] [--box2d-live] [--set substeps=8 ...]
 
 Each sample of ``bench.suite.samples`` runs in Stelkropp's default mode (soft_step, its default
 settings, dt 1/60, 4 sub-steps, sleeping off) and the figure functions of
@@ -11,6 +11,10 @@ bench.box2d.samples``) or, with ``--box2d-live``, from Box2D v3 run in the same 
 sample through its scene loader (``bench.engines.ours.scene_world``): the same segments,
 capsules, rounded boxes, several shapes per body and joints as Box2D v3; only the ``box2d`` keys
 (Box2D's own contact and joint tuning, rolling resistance) are Box2D's alone.
+
+``--set key=value`` (repeatable) runs Stelkropp with those soft_step settings instead of its
+defaults, to measure what a setting does to every figure (bench/results/issue18_experiments.md);
+a run with settings is printed, never written to the docs.
 """
 from __future__ import annotations
 
@@ -61,11 +65,12 @@ for _h in (0.2, 0.5, 1.0, 2.0, 5.0):
 FLOOR = 1e-3  # below this (in the figure's unit) a "lower" figure counts as zero
 
 
-def run_ours(name, seconds, substeps=4, scene_kw=None):
-    """(trace, description, sim) of a sample run for ``seconds`` in Stelkropp's default mode."""
+def run_ours(name, seconds, substeps=4, scene_kw=None, settings=None):
+    """(trace, description, sim) of a sample run for ``seconds`` in Stelkropp's default mode
+    (``settings``: soft_step settings that replace its defaults; they win over ``substeps``)."""
     desc = SAMPLES[name](**(scene_kw or {}))
     sim = OursSim(desc, world=scene_world(desc, source=f"bench.suite {name}"), solver="soft_step",
-                  settings={"substeps": substeps})
+                  settings={"substeps": substeps, **(settings or {})})
     names = {b["name"]: i for i, b in enumerate(desc["bodies"]) if b.get("name")}
     return M.record(sim, seconds, names), desc, sim
 
@@ -94,16 +99,47 @@ def verdict(fid, ours, b2):
     return "yes" if ok else "no"
 
 
-def measure_ours(only=None, progress=True):
-    """[(figure dict, seconds)] of every figure function (``only``: name filter) in Stelkropp; one
-    that fails is listed with ``value`` None and the error as its note."""
+_BOOLS = {"true": True, "on": True, "1": True, "false": False, "off": False, "0": False}
+
+
+def parse_settings(pairs):
+    """{name: value} of ``key=value`` strings, each checked by soft_step's declared setting (its
+    type, choices and bounds: physics/settings.py ``Setting.coerce``); a bad one is a ValueError
+    naming it."""
+    from physics.solvers.soft_step.mode import SoftStep
+    known = SoftStep.settings
+    out = {}
+    for kv in pairs or ():
+        key, sep, text = kv.partition("=")
+        if not sep or key not in known:
+            raise ValueError(f"--set {kv!r}: expected NAME=VALUE, NAME one of {', '.join(sorted(known))}")
+        decl = known[key]
+        value = text
+        if decl.type is bool:
+            value = _BOOLS.get(text.lower(), text)
+        elif decl.type in (int, float):
+            try:
+                value = float(text)
+            except ValueError:
+                pass  # coerce names the setting and the text
+        out[key] = decl.coerce(value)
+    return out
+
+
+def measure_ours(only=None, progress=True, settings=None):
+    """[(figure dict, seconds)] of every figure function (``only``: name filter) in Stelkropp
+    (``settings``: soft_step settings replacing its defaults); one that fails is listed with
+    ``value`` None and the error as its note."""
     out = []
+
+    def run(name, seconds, substeps=4, scene_kw=None):
+        return run_ours(name, seconds, substeps, scene_kw, settings)
     for f in SAMPLE_FIGURES + CASE_FIGURES:
         if only and only not in f.__name__:
             continue
         t0 = time.perf_counter()
         try:
-            figs = f(run_ours)
+            figs = f(run)
         except Exception as e:  # a sample the core cannot build yet is reported, not fatal
             out.append(({"id": f.__name__[4:] + ".*", "value": None, "unit": "", "scene": f.__name__[4:],
                          "note": f"not run: {type(e).__name__}: {e}"[:160]}, 0.0))
@@ -127,11 +163,11 @@ def _fmt(v):
     return f"{float(v):.4g}"
 
 
-def rows(only=None, live=False):
+def rows(only=None, live=False, settings=None):
     """[(id, unit, box2d value, ours, verdict, note)] for the table."""
     b2 = box2d_figures(live, only)
     out = []
-    for d, _ in measure_ours(only):
+    for d, _ in measure_ours(only, settings=settings):
         v2 = b2.get(d["id"])
         out.append((d["id"], d["unit"], v2, d["value"], verdict(d["id"], d["value"], v2) if v2 is not None else "",
                     d["note"]))
@@ -153,7 +189,8 @@ def render_section(table, live, elapsed):
              "Box2D's value or better; closer to the ideal; or issue 18's target where Box2D has none). "
              "Both engines build the same shapes and joints (Stelkropp through its scene loader); Box2D's "
              "own contact and joint tuning of a sample (`box2d` keys) is Box2D's alone. "
-             f"**{held} of {judged}** judged figures hold.", "",
+             f"**{held} of {judged}** judged figures hold. What was measured on the ones that do not: "
+             "`bench/results/issue18_experiments.md` (re-run any setting with `--set NAME=VALUE`).", "",
              "| figure | unit | Box2D v3 | Stelkropp | steady | note |", "|---|---|---|---|---|---|"]
     for fid, unit, v2, v, ok, note in table:
         lines.append(f"| `{fid}` | {unit} | {_fmt(v2)} | {_fmt(v)} | {ok} | {note} |")
@@ -172,13 +209,15 @@ def splice(doc: str, section: list[str]) -> str:
     return doc.rstrip("\n") + "\n\n" + block + "\n"
 
 
-def main_samples(out, only=None, live=False) -> int:
-    """Run the samples, print the table and (unless ``only``) splice it into ``out``."""
+def main_samples(out, only=None, live=False, settings=None) -> int:
+    """Run the samples, print the table and (unless ``only`` or ``settings``) splice it into ``out``."""
     t0 = time.perf_counter()
-    table = rows(only, live)
+    table = rows(only, live, settings)
     section = render_section(table, live, time.perf_counter() - t0)
+    if settings:
+        section[2] += " Settings changed from the defaults: " + ", ".join(f"{k}={v}" for k, v in settings.items()) + "."
     print("\n".join(section))
-    if not only:
+    if not only and not settings:
         from pathlib import Path
         p = Path(out)
         p.write_text(splice(p.read_text() if p.exists() else "", section))
