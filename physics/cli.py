@@ -165,16 +165,25 @@ def _configure(world, args) -> None:
     if args.dt is not None:
         world.dt = args.dt
     for item in args.set:
-        key, sep, raw = item.partition("=")
-        if not sep or not key:
-            raise ValueError(f"--set expects KEY=VALUE, got {item!r}")
-        value = _value(raw)
-        if _is_switch(world, key):
-            value = _switch(key, raw, value)
+        key, value = parse_set_item(item, lambda k: _is_switch(world, k))
         if key in WORLD_KEYS:
             setattr(world, key, value)
         else:
             world.settings[key] = value
+
+
+def parse_set_item(item: str, is_switch) -> tuple:
+    """(key, value) of one ``--set KEY=VALUE``: the value as JSON or a bare word (``_value``), and
+    for a key where ``is_switch(key)`` is true a bool from on/off, yes/no, true/false or 1/0
+    (``_switch``); ValueError naming the item or the key otherwise.  The caller checks the key and
+    the value's range (a mode's setting: ``Setting.coerce``)."""
+    key, sep, raw = item.partition("=")
+    if not sep or not key:
+        raise ValueError(f"--set expects KEY=VALUE, got {item!r}")
+    value = _value(raw)
+    if is_switch(key):
+        value = _switch(key, raw, value)
+    return key, value
 
 
 # spellings of a yes/no option on the command line (issue 20: "--set sleeping=off" turned sleeping on)

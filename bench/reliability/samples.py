@@ -99,30 +99,19 @@ def verdict(fid, ours, b2):
     return "yes" if ok else "no"
 
 
-_BOOLS = {"true": True, "on": True, "1": True, "false": False, "off": False, "0": False}
-
-
 def parse_settings(pairs):
-    """{name: value} of ``key=value`` strings, each checked by soft_step's declared setting (its
-    type, choices and bounds: physics/settings.py ``Setting.coerce``); a bad one is a ValueError
-    naming it."""
+    """{name: value} of ``key=value`` strings, read as the physics CLI reads ``--set``
+    (physics/cli.py ``parse_set_item``) and checked by soft_step's declared setting (its type,
+    choices and bounds: physics/settings.py ``Setting.coerce``); a bad one is a ValueError naming it."""
+    from physics.cli import parse_set_item
     from physics.solvers.soft_step.mode import SoftStep
     known = SoftStep.settings
     out = {}
     for kv in pairs or ():
-        key, sep, text = kv.partition("=")
-        if not sep or key not in known:
-            raise ValueError(f"--set {kv!r}: expected NAME=VALUE, NAME one of {', '.join(sorted(known))}")
-        decl = known[key]
-        value = text
-        if decl.type is bool:
-            value = _BOOLS.get(text.lower(), text)
-        elif decl.type in (int, float):
-            try:
-                value = float(text)
-            except ValueError:
-                pass  # coerce names the setting and the text
-        out[key] = decl.coerce(value)
+        key, value = parse_set_item(kv, lambda k: k in known and known[k].type is bool)
+        if key not in known:
+            raise ValueError(f"--set {key}: not a soft_step setting (one of {', '.join(sorted(known))})")
+        out[key] = known[key].coerce(value)
     return out
 
 
@@ -174,7 +163,7 @@ def rows(only=None, live=False, settings=None):
     return out
 
 
-def render_section(table, live, elapsed):
+def render_section(table, live, elapsed, settings=None):
     """The docs/reliability.md section (markdown lines) of ``rows()``."""
     held = sum(1 for r in table if r[4] == "yes")
     judged = sum(1 for r in table if r[4])
@@ -190,7 +179,9 @@ def render_section(table, live, elapsed):
              "Both engines build the same shapes and joints (Stelkropp through its scene loader); Box2D's "
              "own contact and joint tuning of a sample (`box2d` keys) is Box2D's alone. "
              f"**{held} of {judged}** judged figures hold. What was measured on the ones that do not: "
-             "`bench/results/issue18_experiments.md` (re-run any setting with `--set NAME=VALUE`).", "",
+             "`bench/results/issue18_experiments.md` (re-run any setting with `--set NAME=VALUE`)."
+             + (" Settings changed from the defaults: " + ", ".join(f"{k}={v}" for k, v in settings.items()) + "."
+                if settings else ""), "",
              "| figure | unit | Box2D v3 | Stelkropp | steady | note |", "|---|---|---|---|---|---|"]
     for fid, unit, v2, v, ok, note in table:
         lines.append(f"| `{fid}` | {unit} | {_fmt(v2)} | {_fmt(v)} | {ok} | {note} |")
@@ -213,9 +204,7 @@ def main_samples(out, only=None, live=False, settings=None) -> int:
     """Run the samples, print the table and (unless ``only`` or ``settings``) splice it into ``out``."""
     t0 = time.perf_counter()
     table = rows(only, live, settings)
-    section = render_section(table, live, time.perf_counter() - t0)
-    if settings:
-        section[2] += " Settings changed from the defaults: " + ", ".join(f"{k}={v}" for k, v in settings.items()) + "."
+    section = render_section(table, live, time.perf_counter() - t0, settings)
     print("\n".join(section))
     if not only and not settings:
         from pathlib import Path
