@@ -40,3 +40,14 @@ def test_the_settings_reach_the_world_and_change_the_figure():
                                                           settings={"contact_hertz": 15.0})}
     stock = {d["id"]: d["value"] for d, _ in measure_ours("small_stack", progress=False)}
     assert soft["small_stack.sink_4s"] > 3.0 * stock["small_stack.sink_4s"] > 0.0
+
+
+def test_a_figure_keeps_the_substeps_its_id_names():
+    """``--set substeps=N`` applies to the figures that ask for no sub-step count; the cart's
+    ``substeps12`` figures name theirs, so a run under ``substeps=8`` must still step them at 12."""
+    _, _, own = run_ours("cart", 0.05, substeps=12, scene_kw={"substeps": 12}, settings={"substeps": 8})
+    _, _, rest = run_ours("small_stack", 0.05, settings={"substeps": 8})
+    _, _, stock = run_ours("small_stack", 0.05)
+    assert own.world.settings["substeps"] == 12
+    assert rest.world.settings["substeps"] == 8
+    assert stock.world.settings["substeps"] == 4

@@ -29,7 +29,8 @@ def main(argv=None) -> int:
     ap.add_argument("--samples", action="store_true", help="only Box2D v3's samples beside Box2D (samples.py)")
     ap.add_argument("--only", help="with --samples: figure functions whose name contains this (nothing written)")
     ap.add_argument("--set", action="append", metavar="NAME=VALUE", dest="settings",
-                    help="with --samples: a soft_step setting instead of its default (repeatable; nothing written)")
+                    help="with --samples: a soft_step setting instead of its default (repeatable; nothing "
+                         "written; substeps=N leaves the figures that name their own, such as the cart's, as they are)")
     ap.add_argument("--box2d-live", action="store_true", help="with --samples: run Box2D v3 now, not its recorded figures")
     ap.add_argument("--scheduler", help="a Dask scheduler address (default: a local cluster, one one-thread "
                                         "worker per core), or 'inline' (this process)")

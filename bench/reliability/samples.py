@@ -65,12 +65,17 @@ for _h in (0.2, 0.5, 1.0, 2.0, 5.0):
 FLOOR = 1e-3  # below this (in the figure's unit) a "lower" figure counts as zero
 
 
-def run_ours(name, seconds, substeps=4, scene_kw=None, settings=None):
+def run_ours(name, seconds, substeps=None, scene_kw=None, settings=None):
     """(trace, description, sim) of a sample run for ``seconds`` in Stelkropp's default mode
-    (``settings``: soft_step settings that replace its defaults; they win over ``substeps``)."""
+    (``settings``: soft_step settings that replace its defaults). ``substeps`` is a figure's own
+    sub-step count (the cart's ``substeps12`` figures name theirs in their id), so it wins over a
+    ``substeps`` in ``settings``, which applies to the figures that ask for none (default 4)."""
+    chosen = {"substeps": 4, **(settings or {})}
+    if substeps is not None:
+        chosen["substeps"] = substeps
     desc = SAMPLES[name](**(scene_kw or {}))
     sim = OursSim(desc, world=scene_world(desc, source=f"bench.suite {name}"), solver="soft_step",
-                  settings={"substeps": substeps, **(settings or {})})
+                  settings=chosen)
     names = {b["name"]: i for i, b in enumerate(desc["bodies"]) if b.get("name")}
     return M.record(sim, seconds, names), desc, sim
 
@@ -121,7 +126,7 @@ def measure_ours(only=None, progress=True, settings=None):
     ``value`` None and the error as its note."""
     out = []
 
-    def run(name, seconds, substeps=4, scene_kw=None):
+    def run(name, seconds, substeps=None, scene_kw=None):
         return run_ours(name, seconds, substeps, scene_kw, settings)
     for f in SAMPLE_FIGURES + CASE_FIGURES:
         if only and only not in f.__name__:
