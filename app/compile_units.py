@@ -8,14 +8,17 @@ throwaway world, so two processes can fill the cache at once, each with its own 
 sandbox loads the other's from disk.  Calling a stage out of order on a probe world is fine: only
 the argument types matter to the compiler, the results are thrown away.
 
-Unit names: ``broad:<broadphase>``, ``narrow``, ``solve:<solver>:<integrator>``, ``frame``, ``extras``
-(the quadtree overlay), ``step:<solver>:<integrator>:<broadphase>`` (a whole step: what is left),
+Unit names: ``broad:<broadphase>``, ``narrow``, ``solve:<solver>:<integrator>``, ``frame``, ``guard``
+(the kernels that open and close a step), ``extras`` (the quadtree overlay), ``step:<solver>:<integrator>:<broadphase>`` (a whole step: what is left),
 ``joints:<solver>:<integrator>`` (the joint stage, which a step compiles only once a world has a
 joint: loaded before a scene with joints runs, else compiled by the helper right after the gate,
 since the mouse drag is a joint; and for a mode switched to before a world with joints steps in it,
 so no step stops the window to compile).
 """
 from __future__ import annotations
+
+import os
+import time
 
 import physics
 from physics import options
@@ -62,6 +65,16 @@ def _solve(solver, integrator):
     p.solve(w, w.dt)
 
 
+def _guard():
+    """The two kernels that open and close every step (physics/step/frame.py: checkpoint, energy
+    guard, finite check, touch events), the same for every mode."""
+    w = probe_world(options.DEFAULT_SOLVER)
+    p = w._pipeline
+    p._refresh(w, w.dt)
+    p.open_step(w)
+    p.close_step(w)
+
+
 def _frame():
     w = probe_world(options.DEFAULT_SOLVER)
     p = w._pipeline
@@ -104,9 +117,22 @@ def _joints(solver, integrator):
 
 
 def run(unit: str) -> None:
-    """Compile (or load from the cache) the kernels of ``unit``; ValueError for an unknown name."""
+    """Compile (or load from the cache) the kernels of ``unit``; ValueError for an unknown name.
+
+    With ``STELKROPP_UNIT_LOG=<file>`` each unit appends a line to that file (process id, unit,
+    wall clock at start and end, CPU seconds of the process at start and end): the timeline of a
+    launch in both processes (bench.launch reads it)."""
+    log = os.environ.get("STELKROPP_UNIT_LOG")
+    t0, c0 = time.time(), time.process_time()
+    _run(unit)
+    if log:
+        with open(log, "a") as f:
+            f.write(f"{os.getpid()} {unit} {t0:.3f} {time.time():.3f} {c0:.2f} {time.process_time():.2f}\n")
+
+
+def _run(unit: str) -> None:
     kind, *args = unit.split(":")
-    fn = {"broad": _broad, "narrow": _narrow, "solve": _solve, "frame": _frame, "extras": _extras, "step": _step,
+    fn = {"broad": _broad, "narrow": _narrow, "guard": _guard, "solve": _solve, "frame": _frame, "extras": _extras, "step": _step,
           "joints": _joints}.get(kind)
     if fn is None:
         raise ValueError(f"unknown compile unit {unit!r}")
@@ -115,10 +141,13 @@ def run(unit: str) -> None:
 
 def gate_units(solver: str, integrator: str, broadphase: str) -> tuple[list[str], list[str]]:
     """What the open scene needs before it can run, split in two: (this process's units, the
-    helper's).  The narrow phase is the largest single group (about as much as the solver and the
-    frame together: measured with numba's compile events, default scene), so the helper takes it;
-    this process takes the solver, the frame and the broad phase."""
-    return [f"solve:{solver}:{integrator}", "frame", f"broad:{broadphase}"], ["narrow"]
+    helper's), about equal in CPU time.  Measured cold, each unit after the ones before it in
+    one process (numba's compile events, bench/results/launch.md): the soft-step solver 26 CPU s,
+    the sweep broad phase 3.5 and the step's own two kernels 4 here; the narrow phase 20 and the
+    frame (geometry, islands, drawing, picking) 10.5 in the helper.  The last step here
+    (``step:...``) then only loads; when the helper is done first it takes this process's last
+    units."""
+    return [f"solve:{solver}:{integrator}", f"broad:{broadphase}", "guard"], ["narrow", "frame"]
 
 
 def background_units(solver: str, integrator: str, broadphase: str) -> list[str]:

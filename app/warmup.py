@@ -33,7 +33,7 @@ from .compile_worker import listen
 # kernels a cold launch compiles per unit, both processes together (only the progress bar uses
 # it, until a cold launch has saved its own count): the default scene compiled 133 in all; the
 # joint stage's 30 is a guess (not counted yet), corrected by the first cold launch's own count
-DEFAULT_COUNTS = {"solve": 45, "frame": 25, "broad": 15, "narrow": 42, "step": 6, "joints": 30}
+DEFAULT_COUNTS = {"solve": 45, "frame": 25, "broad": 15, "narrow": 42, "guard": 6, "step": 1, "joints": 30}
 MIN_COUNTED = 20          # fewer compiled kernels than this: a warm numba cache, not a count
 FIRST_FRAME_WAIT = 10.0   # s: compile here after the first frame, or after this without a window
 

@@ -150,12 +150,8 @@ class Pipeline:
             return
         self.profile.start()
         self._refresh(world, dt)
-        B = store.bodies.view
-        ck = self._checkpoint
-        ck.ensure(n)
         guard = self._guard
-        begin_step(self.ctx.array, B, store.fixtures.view, store.verts.view, store.fixtures.n,
-                   ck.X, ck.Q, ck.V, ck.W, store.springs.view, guard.start)
+        self.open_step(world)
         guard.begin(world)
         self.profile.stamp("begin")
         stage = "collide"
@@ -180,13 +176,9 @@ class Pipeline:
                                   "reverted to the state before the step", stage=stage)
             world.fault = err
             raise err from exc
-        C = store.contacts.cur
-        nc = store.contacts.n
-        k, nt, nb, na = end_step(self.ctx.array, B, store.springs.view, ck.bad, ck.why, C.a, C.b, nc, ck.count,
-                                 guard.end, C.key, C.count, C.depth, C.jn,
-                                 *self.events.contacts.scratch(nc))
+        k, nt, nb, na = self.close_step(world)
         if k:
-            self._fail(world, ck.slots(k))
+            self._fail(world, self._checkpoint.slots(k))
         gained = guard.excess(world, dt)
         if gained is not None:
             self._gained(world, *gained)
@@ -196,6 +188,24 @@ class Pipeline:
         world.steps += 1
         world.fault = None
         self.events.commit(world, nt, nb, na)
+
+    def open_step(self, world) -> None:
+        """The kernel that opens a step: checkpoint, energy sums, fixture geometry (frame.py)."""
+        store = world._store
+        ck = self._checkpoint
+        ck.ensure(store.bodies.n)
+        begin_step(self.ctx.array, store.bodies.view, store.fixtures.view, store.verts.view, store.fixtures.n,
+                   ck.X, ck.Q, ck.V, ck.W, store.springs.view, self._guard.start)
+
+    def close_step(self, world):
+        """The kernel that closes a step (finite check, energy sums, touch events: frame.py);
+        returns (non-finite bodies, touches, began, ended)."""
+        store = world._store
+        ck = self._checkpoint
+        C = store.contacts.cur
+        nc = store.contacts.n
+        return end_step(self.ctx.array, store.bodies.view, store.springs.view, ck.bad, ck.why, C.a, C.b, nc,
+                        ck.count, self._guard.end, C.key, C.count, C.depth, C.jn, *self.events.contacts.scratch(nc))
 
     #: the stages that write the bodies' state (x, q, v, w); the others read it (collision) or
     #: only zero velocities (islands), so a non-finite state after the step is theirs
