@@ -8,8 +8,9 @@ throwaway world, so two processes can fill the cache at once, each with its own 
 sandbox loads the other's from disk.  Calling a stage out of order on a probe world is fine: only
 the argument types matter to the compiler, the results are thrown away.
 
-Unit names: ``broad:<broadphase>``, ``narrow``, ``solve:<solver>:<integrator>``, ``frame``, ``guard``
-(the kernels that open and close a step), ``extras`` (the quadtree overlay), ``step:<solver>:<integrator>:<broadphase>`` (a whole step: what is left),
+Unit names: ``broad:<broadphase>``, ``narrow``, ``solve:<solver>:<integrator>``, ``frame``,
+``guard`` (the kernels that open and close a step), ``extras`` (the quadtree overlay),
+``step:<solver>:<integrator>:<broadphase>`` (a whole step: what is left),
 ``joints:<solver>:<integrator>`` (the joint stage, which a step compiles only once a world has a
 joint: loaded before a scene with joints runs, else compiled by the helper right after the gate,
 since the mouse drag is a joint; and for a mode switched to before a world with joints steps in it,
@@ -132,8 +133,8 @@ def run(unit: str) -> None:
 
 def _run(unit: str) -> None:
     kind, *args = unit.split(":")
-    fn = {"broad": _broad, "narrow": _narrow, "guard": _guard, "solve": _solve, "frame": _frame, "extras": _extras, "step": _step,
-          "joints": _joints}.get(kind)
+    fn = {"broad": _broad, "narrow": _narrow, "guard": _guard, "solve": _solve, "frame": _frame,
+          "extras": _extras, "step": _step, "joints": _joints}.get(kind)
     if fn is None:
         raise ValueError(f"unknown compile unit {unit!r}")
     fn(*args)

@@ -88,14 +88,15 @@ def launch_once(app_root: Path, scene: str, cache: Path, display: str, timeout: 
     """One sandbox launch; seconds from the process start to drawn / ready / playing."""
     with tempfile.TemporaryDirectory(prefix="stelkropp-launch-") as tmp:
         st_path = Path(tmp) / "status.json"
+        unit_log = Path(tmp) / "units.txt"
         env = dict(os.environ, DISPLAY=display, STELKROPP_CACHE_DIR=str(cache), XDG_DATA_HOME=tmp,
-                   XDG_STATE_HOME=tmp)
+                   XDG_STATE_HOME=tmp, STELKROPP_UNIT_LOG=str(unit_log))
         env.pop("NUMBA_CACHE_DIR", None)
         cmd = [sys.executable, "-m", "app", scene, "--position", "0,0", "--size", "1280x800",
                "--status", str(st_path), "--no-autosave-offer"]
         out = {"load_before": load()}
         seen = set()
-        t0 = time.monotonic()
+        t0, wall0 = time.monotonic(), time.time()
         proc = subprocess.Popen(cmd, cwd=app_root, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                                 text=True)
         try:
@@ -127,7 +128,29 @@ def launch_once(app_root: Path, scene: str, cache: Path, display: str, timeout: 
                 proc.kill()
         out["progress_values"] = len(seen)
         out["load_after"] = load()
+        out["units"] = _units(unit_log, proc.pid, wall0)
         return out
+
+
+def _units(path: Path, pid: int, wall0: float) -> list:
+    """The compile units of one launch (app.compile_units.run's log): [process ("sandbox" or
+    "helper"), unit, start s, end s after the launch, CPU s], in start order."""
+    rows = []
+    try:
+        for ln in path.read_text().splitlines():
+            p, unit, a, b, c0, c1 = ln.split()
+            rows.append(["sandbox" if int(p) == pid else "helper", unit, float(a) - wall0, float(b) - wall0,
+                         float(c1) - float(c0)])
+    except (OSError, ValueError):
+        return []
+    return sorted(rows, key=lambda r: r[2])
+
+
+def _timeline(r: dict) -> str:
+    """The units that ended before the scene played, one line each."""
+    end = r.get("playing", float("inf"))
+    return "\n".join(f"{'':>21}{who:>8} {unit:<40} {a:6.1f} -> {b:6.1f} s  cpu {c:5.1f}"
+                     for who, unit, a, b, c in r.get("units", []) if b <= end)
 
 
 def _fmt(r: dict) -> str:
@@ -172,6 +195,8 @@ def main(argv=None) -> int:
                         r.update(root=str(root), phase=phase, repeat=rep)
                         results.append(r)
                         print(f"{root.name:>12} {phase:>6}: {_fmt(r)}", flush=True)
+                        if phase == "cold" and r.get("units"):
+                            print(_timeline(r), flush=True)
                 finally:
                     if not given:
                         shutil.rmtree(cache, ignore_errors=True)
