@@ -198,6 +198,11 @@ class Comparison:
             warm.prioritize(lane.solver, lane.integrator, bp)
             lane.waiting = f"compiling {lane.solver} ({lane.integrator}) ..."
             return False
+        narrow = compile_units.narrow_unit(lane.world)
+        if not warm.narrow_ready(narrow):
+            warm.want_unit(narrow)
+            lane.waiting = "compiling the narrow phase for these shapes ..."
+            return False
         if lane.world.joints and not warm.joints_ready(lane.solver, lane.integrator):
             warm.want_unit(compile_units.joints_unit(lane.solver, lane.integrator))
             lane.waiting = f"compiling the joints of {lane.solver} ({lane.integrator}) ..."

@@ -8,9 +8,10 @@ throwaway world, so two processes can fill the cache at once, each with its own 
 sandbox loads the other's from disk.  Calling a stage out of order on a probe world is fine: only
 the argument types matter to the compiler, the results are thrown away.
 
-Unit names: ``broad:<broadphase>``, ``narrow``, ``solve:<solver>:<integrator>``, ``frame``,
+Unit names: ``broad:<broadphase>``, ``narrow`` (the lean kernel), ``narrow:full``,
+``solve:<solver>:<integrator>``, ``frame``,
 ``guard`` (the kernels that open and close a step), ``extras`` (the quadtree overlay),
-``step:<solver>:<integrator>:<broadphase>`` (a whole step: what is left),
+``step:<solver>:<integrator>:<broadphase>[:full]`` (a whole step: what is left),
 ``joints:<solver>:<integrator>`` (the joint stage, which a step compiles only once a world has a
 joint: loaded before a scene with joints runs, else compiled by the helper right after the gate,
 since the mouse drag is a joint; and for a mode switched to before a world with joints steps in it,
@@ -21,8 +22,11 @@ from __future__ import annotations
 import os
 import time
 
+import numpy as np
+
 import physics
 from physics import options
+from physics.store.fixtures import CAPSULE, POLYGON
 from physics.collision import broadphase, narrowphase
 from physics.collision.broadphase.fixture_filter import filter_pairs
 
@@ -50,8 +54,11 @@ def _broad(bp):
     filter_pairs(s.fixtures.view, pairs, n, w._pipeline._no_keys)
 
 
-def _narrow():
+def _narrow(kind: str = "lean"):
+    """The narrow phase's lean kernel (SAT; sharp polygons and circles), or with ``kind`` "full"
+    the whole one (GJK, EPA, rounded shapes, chains): physics/collision/narrowphase/kernel.py."""
     w = probe_world(options.DEFAULT_SOLVER)
+    w._store.contacts.full = kind == "full"
     p, s = w._pipeline, w._store
     p._refresh(w, w.dt)
     p.refresh_geometry(w, w.dt)
@@ -92,8 +99,9 @@ def _extras():
     probe_world(options.DEFAULT_SOLVER).quadtree_cells()
 
 
-def _step(solver, integrator, bp):
+def _step(solver, integrator, bp, kind="lean"):
     w = probe_world(solver, integrator, bp)
+    w._store.contacts.full = kind == "full"
     for _ in range(3):
         w.step()
     w.render_data()
@@ -140,7 +148,25 @@ def _run(unit: str) -> None:
     fn(*args)
 
 
-def gate_units(solver: str, integrator: str, broadphase: str) -> tuple[list[str], list[str]]:
+NARROW_UNITS = ("narrow", "narrow:full")
+
+
+def narrow_unit(world) -> str:
+    """The narrow-phase unit ``world`` steps with: "narrow", the lean kernel (SAT, sharp polygons
+    and circles), unless its narrow phase is GJK, it has a rounded shape (a capsule, segment or
+    rounded polygon) or a chain, or it has met such a pair before: then "narrow:full".  (Shape
+    for shape this says "full" for a few worlds the lean kernel would serve, such as capsules
+    that only meet circles: the wait is then for nothing, never a compile in the window.)"""
+    s = world._store
+    if world.narrowphase != "sat" or s.contacts.full:
+        return "narrow:full"
+    n = s.fixtures.n
+    shape = s.fixtures.view.shape[:n]
+    rounded = (shape == POLYGON) & (s.fixtures.view.radius[:n] > 0.0)
+    return "narrow:full" if bool(np.any(shape >= CAPSULE) or np.any(rounded)) else "narrow"
+
+
+def gate_units(solver: str, integrator: str, broadphase: str, narrow: str = "narrow"):
     """What the open scene needs before it can run, split in two: (this process's units, the
     helper's), about equal in CPU time.  Measured cold, each unit after the ones before it in
     one process (numba's compile events, bench/results/launch.md): the soft-step solver 26 CPU s,
@@ -148,14 +174,16 @@ def gate_units(solver: str, integrator: str, broadphase: str) -> tuple[list[str]
     frame (geometry, islands, drawing, picking) 10.5 in the helper.  The last step here
     (``step:...``) then only loads; when the helper is done first it takes this process's last
     units."""
-    return [f"solve:{solver}:{integrator}", f"broad:{broadphase}", "guard"], ["narrow", "frame"]
+    return [f"solve:{solver}:{integrator}", f"broad:{broadphase}", "guard"], [narrow, "frame"]
 
 
-def background_units(solver: str, integrator: str, broadphase: str) -> list[str]:
+def background_units(solver: str, integrator: str, broadphase: str, narrow: str = "narrow") -> list[str]:
     """Everything else the sandbox can switch to, the likeliest first: the other broad phases,
-    the quadtree overlay, then the other solver modes.  (The open mode's joint stage is the
-    gate's for a scene with joints, else the first background unit: app.warmup.)"""
+    the other narrow phase, the quadtree overlay, then the other solver modes.  (The open mode's
+    joint stage is the gate's for a scene with joints, else the first background unit:
+    app.warmup.)"""
     out = [f"broad:{bp}" for bp in ("brute", "sweep", "quadtree") if bp != broadphase]
+    out += [u for u in NARROW_UNITS if u != narrow]
     out.append("extras")
     out += [f"solve:{s}:{integrator}" for s in options.SOLVERS if s != solver]
     return out

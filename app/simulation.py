@@ -57,6 +57,13 @@ class Simulation:
             self.warmup.prioritize(w.solver, w.integrator, bp)
             self.compiling_note = f"compiling {w.solver} ({w.integrator}, {bp} broad phase) ..."
             return 0.0
+        narrow = compile_units.narrow_unit(w)
+        if not self.warmup.narrow_ready(narrow):
+            # the narrow phase's lean and whole kernels compile apart: the other one loads (or
+            # compiles) in the warmup thread, not in this step
+            self.warmup.want_unit(narrow)
+            self.compiling_note = "compiling the narrow phase for these shapes ..."
+            return 0.0
         if w.joints and not self.warmup.joints_ready(w.solver, w.integrator):
             # the joint stage compiles once a world has a joint: in the warmup thread, not in this step
             self.warmup.want_unit(compile_units.joints_unit(w.solver, w.integrator))

@@ -69,16 +69,19 @@ class Warmup:
         self.solver, self.integrator = world.solver, world.integrator
         self.broadphase = compile_units.broadphase_of(world)
         self.key = (self.solver, self.integrator, self.broadphase)
+        self.narrow = compile_units.narrow_unit(world)
         self.cache = compile_units.cache_dir()
-        mine, theirs = compile_units.gate_units(*self.key)
-        self.final = "step:" + ":".join(self.key)
+        mine, theirs = compile_units.gate_units(*self.key, self.narrow)
+        self.gate = mine + theirs     # loaded here once the scene can run (the last step loads them)
+        self.final = "step:" + ":".join(self.key) + (":full" if self.narrow != "narrow" else "")
         # the mode's joint stage is the largest unit (182 CPU s cold, measured alone: it compiles
         # the step again with the joint table).  A scene with joints waits for it; any other scene
         # plays without it, while the helper compiles it first of the background units (the first
         # mouse drag, a joint, waits for it: app/simulation.py)
         joints = compile_units.joints_unit(self.solver, self.integrator)
         self.after_final = [joints] if world.joints else []
-        background = [u for u in compile_units.background_units(*self.key) if not self.cached(u)]
+        background = [u for u in compile_units.background_units(*self.key, self.narrow)
+                      if not self.cached(u)]
         if os.environ.get("STELKROPP_BACKGROUND_COMPILE", "1") == "0":
             background = []     # other modes only when switched to (e.g. a CI box with one core)
         if not world.joints and not self.cached(joints):
@@ -203,6 +206,7 @@ class Warmup:
             self._unit(u)
         self._save_counts(self.counter.n - t_cold)
         self.warmed.add(self.key)
+        self.loaded.update(self.gate)
         self.t_gate = time.monotonic() - self.t0
         self._ready = True
         if self.helper is not None and self.warm:
@@ -224,8 +228,11 @@ class Warmup:
 
     def _serve(self):
         """After the gate: load the modes the user switches to (``prioritize``) and their joint
-        stages (``want_unit``), and the quadtree overlay's kernels once the helper has them."""
-        later = [u for u in ("extras",) if self.helper is not None and u in self._initial_queue]
+        stages (``want_unit``), and the open mode's joint stage and the quadtree overlay's kernels
+        once the helper has them (the joint stage is the mouse drag's: a scene without joints
+        plays before the helper has it, and the first drag should not wait for it then)."""
+        later = [u for u in (self.joints, "extras")
+                 if self.helper is not None and u in self._initial_queue and u not in self.loaded]
 
         def settled():
             return [u for u in later if self.helper.settled(u)]
@@ -279,6 +286,11 @@ class Warmup:
         A stage that failed to compile counts as ready: the step then reports the failure."""
         unit = compile_units.joints_unit(solver, integrator)
         return unit in self.loaded or unit in self.failed
+
+    def narrow_ready(self, unit: str) -> bool:
+        """Is this narrow-phase unit (``compile_units.narrow_unit``: the lean kernel or the whole
+        one) loaded here?  A failed one counts as ready, as for joints (the step says why)."""
+        return self._ready and (unit in self.loaded or unit in self.failed)
 
     def can_step(self, solver: str, integrator: str, broadphase: str | None = None) -> bool:
         """Are the kernels of this mode loaded here (a step will not stop to compile)?"""

@@ -3,7 +3,8 @@
 The sandbox compiles the open scene's units on two cores and then takes one last step
 (``step:<solver>:<integrator>:<broadphase>``), which should only load what the two processes
 put in the cache: a kernel that no unit compiles is compiled there, by one core, while the other
-idles (the step's own two kernels were such a tail: 4 CPU s of a 46 s cold launch).  Run in a
+idles (the step's own two kernels were such a tail: 4 CPU s of a 46 s cold launch).  And the
+default scene compiles only the narrow phase's lean kernel.  Run in a
 fresh process with an empty cache directory (a cold launch), the default scene, about a minute.
 """
 from __future__ import annotations
@@ -51,3 +52,11 @@ def test_the_gate_units_leave_the_last_step_nothing_to_compile(tmp_path):
     assert all(compiled[u] for u in res["units"][:-1]), {u: len(k) for u, k in compiled.items()}
     assert compiled[final] == [], compiled[final]
     assert {"physics.step.frame.begin_step", "physics.step.frame.end_step"} <= set(compiled["guard"])
+    # the default scene (SAT; boxes, polygons, circles) gets the lean narrow kernel: compiled
+    # without GJK, EPA, the rounded and the chain pairs (physics/collision/narrowphase/kernel.py)
+    assert "narrow" in res["units"]
+    everything = [k for ks in compiled.values() for k in ks]
+    assert "physics.collision.narrowphase.kernel._rows" in compiled["narrow"]
+    left_out = ("physics.collision.narrowphase.epa.", "physics.collision.narrowphase.gjk.",
+                "physics.collision.narrowphase.rounded.round_pair", "physics.collision.narrowphase.chain.")
+    assert not [k for k in everything if k.startswith(left_out)]

@@ -276,3 +276,55 @@ def test_many_box_pairs_in_one_call():
         live = np.arange(2)[None, :] < C.count[:n, None]
         deepest = np.where(live, C.depth[:n], -np.inf).max(axis=1)
         assert np.all(deepest > 0)  # every row has a penetrating point
+
+
+def _pile(full: bool):
+    """A static floor, boxes of two sizes, a hexagon and circles falling into a pile."""
+    import physics
+    w = physics.World()
+    w.add_body(Polygon.box(20, 1), kind="static", position=(0, -0.5))
+    for k in range(6):
+        w.add_body(Polygon.box(0.5 + 0.1 * k, 0.5), position=(0.3 * k - 0.8, 0.6 + 0.7 * k), angle=0.1 * k)
+        w.add_body(physics.Circle(0.2), position=(0.25 * k - 0.5, 5.0 + 0.5 * k))
+    w.add_body(Polygon.regular(6, 0.4), position=(0.1, 9.0))
+    w._store.contacts.full = full
+    return w
+
+
+def test_the_lean_kernel_makes_the_rows_the_whole_one_makes():
+    """SAT worlds of sharp polygons and circles collide in the lean kernel (compiled without GJK,
+    EPA, rounded and chain pairs: kernel._manifold); its rows are the whole kernel's, bit for bit,
+    so a pile falls the same way in both (positions after 2 s compared exactly)."""
+    lean, whole = _pile(False), _pile(True)
+    for _ in range(120):
+        lean.step()
+        whole.step()
+    assert not lean._store.contacts.full and whole._store.contacts.full
+    assert lean._store.contacts.n > 10
+    for a, b in zip(lean.bodies, whole.bodies):
+        assert a.position == b.position and a.angle == b.angle
+
+
+def test_a_capsule_switches_the_world_to_the_whole_kernel():
+    """The lean kernel leaves rounded and chain pairs out: the first step that meets one (a
+    capsule dropped on the floor of a box world) runs the whole kernel instead, and so does every
+    step after it; the capsule lands on the floor like a body in a world that had it from the
+    start."""
+    import physics
+    w = _pile(False)
+    w.sleeping = False     # the contacts of a body asleep are not listed
+    for _ in range(10):
+        w.step()
+    assert not w._store.contacts.full
+    cap = w.add_body(physics.Capsule((-0.5, 0.0), (0.5, 0.0), 0.2), position=(6.0, 0.5))
+    ref = physics.World(sleeping=False)
+    ref.add_body(Polygon.box(20, 1), kind="static", position=(0, -0.5))
+    rcap = ref.add_body(physics.Capsule((-0.5, 0.0), (0.5, 0.0), 0.2), position=(6.0, 0.5))
+    for _ in range(60):
+        w.step()
+        ref.step()
+    assert w._store.contacts.full
+    rows = [c for c in w.contacts() if cap in (c.body_a, c.body_b)]
+    assert rows, "the capsule has no contact with the floor"
+    # resting on the floor (surface at y = 0) at its radius, as in the reference world
+    assert abs(cap.position[1] - 0.2) < 0.01 and abs(cap.position[1] - rcap.position[1]) < 1e-6

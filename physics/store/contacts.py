@@ -51,7 +51,7 @@ CONTACT_FIELDS = {
     "e": ((), f8),                 # combined restitution: max(e_a, e_b)
     "mu_s": ((), f8),              # combined static friction: sqrt(mu_a mu_b)
     "mu_d": ((), f8),              # combined dynamic friction: sqrt(mu_a mu_b)
-    "colour": ((), i1),            # soft_step "coloured" layout's graph colour, kept while the pair touches; -1: none yet
+    "colour": ((), i1),            # soft_step "coloured" layout's graph colour, kept while touching; -1: none yet
 }
 #: largest growth of the impulses' time span that ContactBuffer.adopt rescales (beyond: cold start);
 #: 4 covers soft_step -> sequential_impulse at the default 4 sub-steps
@@ -69,7 +69,8 @@ class ContactBuffer:
 
     ``span`` is the time span (s) the accumulated impulses ``jn``/``jt`` of the
     current table stand for, and ``span_step`` the step whose solve may use them
-    as they are (see :meth:`adopt`).
+    as they are (see :meth:`adopt`).  ``full``: this world has met a pair the narrow phase's
+    lean kernel does not handle (collision/narrowphase/kernel.py), so it uses the whole one.
     """
 
     def __init__(self, cap: int = 256):
@@ -79,6 +80,7 @@ class ContactBuffer:
         self.n_prev = 0
         self.span = 0.0
         self.span_step = -1
+        self.full = False
 
     @property
     def capacity(self) -> int:

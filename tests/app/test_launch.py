@@ -97,6 +97,123 @@ def test_the_joint_stage_holds_up_only_scenes_with_joints(tmp_path, monkeypatch)
     assert Warmup(plain, threading.Lock(), helper=False).background == [w.joints]
 
 
+class _FakeHelper:
+    """Stands in for app.compile_helper.CompileHelper: units finish when the test says so."""
+
+    def __init__(self, on_change):
+        self.on_change, self.queue, self.done, self.failed = on_change, [], set(), {}
+        self.label, self.alive = "", True
+
+    def start(self):
+        return self
+
+    def push(self, unit, first=False):
+        if unit not in self.queue and unit not in self.done:
+            self.queue.insert(0, unit) if first else self.queue.append(unit)
+
+    def claim(self, unit):
+        if unit in self.queue:
+            self.queue.remove(unit)
+            return True
+        return unit not in self.done
+
+    def settled(self, unit):
+        return unit in self.done or unit in self.failed
+
+    def kernels_for(self, units):
+        return 0
+
+    def busy(self):
+        return bool(self.queue)
+
+    def close(self):
+        pass
+
+    def finish(self, unit):
+        if unit in self.queue:
+            self.queue.remove(unit)
+        self.done.add(unit)
+        self.on_change()
+
+
+def _wait_for(cond, seconds=5.0):
+    import threading
+    for _ in range(int(seconds / 0.01)):
+        if cond():
+            return True
+        threading.Event().wait(0.01)
+    return cond()
+
+
+def test_the_joint_stage_the_helper_finishes_after_the_gate_is_loaded(monkeypatch):
+    """A scene without joints plays before the helper has compiled its mode's joint stage (the
+    mouse drag's); when the helper finishes it later, this process loads it without being asked,
+    so the first drag does not wait (ci15: it was loaded only if it was in the cache at the gate,
+    and the window tests' wait_ready, which waits for it, timed out)."""
+    import threading
+
+    import physics
+    from app import compile_units, warmup
+    monkeypatch.setenv("STELKROPP_BACKGROUND_COMPILE", "1")
+    monkeypatch.setattr(compile_units, "cached", lambda unit: False)
+    monkeypatch.setattr(compile_units, "mark", lambda unit: None)
+    ran = []
+    monkeypatch.setattr(compile_units, "run", lambda unit: ran.append(unit))
+    monkeypatch.setattr(warmup, "CompileHelper", _FakeHelper)
+    w = warmup.Warmup(physics.load_scene(ROOT / "scenes" / "default.json"), threading.Lock())
+    w.frame_drawn()
+    w.start()
+    for u in w.theirs:
+        assert _wait_for(lambda: u in w.helper.queue or w.ready), u
+        w.helper.finish(u)
+    assert _wait_for(lambda: w.ready), "the gate did not open"
+    assert not w.joints_ready(w.solver, w.integrator) and w.joints not in ran
+    w.helper.finish(w.joints)
+    assert _wait_for(lambda: w.joints_ready(w.solver, w.integrator)), "the helper's joint stage was not loaded"
+    assert w.joints in ran
+
+
+def test_the_gate_takes_the_narrow_kernel_the_scene_needs(monkeypatch):
+    """The narrow phase has a lean kernel (SAT, sharp polygons and circles) and the whole one
+    (GJK, rounded shapes, chains), compiled apart: the gate takes the open scene's, the other is
+    a background unit, and a world that comes to need it (GJK chosen, a capsule drawn) waits for
+    it (``narrow_ready``) instead of compiling it in the window's step."""
+    import threading
+
+    import physics
+    from app import compile_units
+    from app.warmup import Warmup
+    monkeypatch.setattr(compile_units, "cached", lambda unit: False)
+    plain = physics.load_scene(ROOT / "scenes" / "default.json")
+    assert compile_units.narrow_unit(plain) == "narrow"
+    w = Warmup(plain, threading.Lock(), helper=False)
+    assert "narrow" in w.theirs and "narrow:full" not in w.theirs and "narrow:full" in w.background
+    assert not w.narrow_ready("narrow")          # nothing before the gate
+    plain.narrowphase = "gjk"
+    assert compile_units.narrow_unit(plain) == "narrow:full"
+    w2 = Warmup(plain, threading.Lock(), helper=False)
+    assert "narrow:full" in w2.theirs and "narrow" in w2.background and w2.final.endswith(":full")
+    plain.narrowphase = "sat"
+    plain.add_body(physics.Capsule((-0.5, 0), (0.5, 0), 0.2), position=(0, 20))
+    assert compile_units.narrow_unit(plain) == "narrow:full"
+    # after the gate the scene's kernel is loaded, the other one only once it is wanted
+    monkeypatch.setattr(compile_units, "run", lambda unit: None)
+    monkeypatch.setattr(compile_units, "mark", lambda unit: None)
+    w.frame_drawn()
+    w.start()
+    for _ in range(300):
+        if w.ready:
+            break
+        threading.Event().wait(0.01)
+    assert w.narrow_ready("narrow") and not w.narrow_ready("narrow:full")
+    w.want_unit("narrow:full")
+    for _ in range(300):
+        if w.narrow_ready("narrow:full"):
+            break
+        threading.Event().wait(0.01)
+    assert w.narrow_ready("narrow:full")
+
+
 def test_a_rival_mode_loads_while_the_scene_steps(monkeypatch):
     """The gate's units hold the physics lock (nothing steps before the scene can run); after it,
     a mode switched to (a comparison's rival) loads without it, so the main world keeps stepping

@@ -6,8 +6,8 @@ van den Bergen 1999), ``epa`` (penetration depth), ``sat`` (separating axes),
 ``rounded`` (rounded polygons, capsules and segments: cores swept by a radius), ``chain``
 (one-sided chain segments with ghost vertices),
 ``pair`` (one polygon pair by either method), ``carry`` (per-point state
-carried from the previous step) and ``kernel`` (the whole pass).  The single-pair entries (``sat_query``, ``gjk_distance``,
-``epa``, ``polygon_collide``, ``circle_circle``, ``polygon_circle``) take
+carried from the previous step) and ``kernel`` (the whole pass).  The single-pair
+entries (``sat_query``, ``gjk_distance``, ``epa``, ``polygon_collide``, ``circle_circle``, ``polygon_circle``) take
 plain vertex arrays in world coordinates for tests and tools.
 """
 from __future__ import annotations
@@ -35,6 +35,15 @@ def collide(ctx, B, F, V, pairs, npairs, contacts, limit: int = 1_000_000) -> in
     check_rows(int(npairs), limit)  # refused before the tables change (limit.py)
     contacts.swap()
     contacts.ensure(int(npairs), limit)
-    contacts.n = int(collide_kernel(ctx.array, B, F, V, pairs, int(npairs), contacts.cur, contacts.prev,
-                                    int(contacts.n_prev)))
+    # the lean kernel (SAT; sharp polygons and circles: kernel._manifold) until a pair needs more
+    lean = not contacts.full and ctx.get("narrowphase") == SAT
+    n = -1
+    if lean:
+        n = collide_kernel(ctx.array, B, F, V, pairs, int(npairs), contacts.cur, contacts.prev,
+                           int(contacts.n_prev), None)
+    if n < 0:
+        contacts.full = contacts.full or lean    # this world has such pairs: the whole kernel from now on
+        n = collide_kernel(ctx.array, B, F, V, pairs, int(npairs), contacts.cur, contacts.prev,
+                           int(contacts.n_prev), 1)
+    contacts.n = int(n)
     return contacts.n

@@ -21,7 +21,7 @@ from ...geometry.shapes import MAX_POLYGON_VERTICES
 from ...store.fixtures import CHAIN_SEGMENT, CIRCLE, POLYGON
 from .chain import chain_circle, chain_polygon
 from .circles import circle_circle, polygon_circle
-from .pair import polygon_pair
+from .pair import polygon_pair, sat_pair
 from .rounded import round_pair
 from .carry import carry_over, seek
 
@@ -89,7 +89,7 @@ def _relative(V, F, i, ox, oy, out):
 
 
 @kernel(inline="always")
-def _manifold(B, F, V, fa, fb, a, b, method, margin, sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
+def _manifold(B, F, V, fa, fb, a, b, method, full, margin, sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
     """Dispatch on the fixtures' shape pair; points are relative to body a's centre.
 
     Circles and sharp polygons take the paths they took before fixtures (bit for bit);
@@ -100,10 +100,18 @@ def _manifold(B, F, V, fa, fb, a, b, method, margin, sc_a, sc_b, sw, si, lam, po
     one function so large that numba's type inference of it was most of a cold launch (the
     narrow-phase unit: 43 -> 21 CPU s, docs/internals.md "Compile time"), for a call that costs
     a few ns against the hundreds of ns such a pair takes (bench/results/launch.md).
+
+    ``full`` None: the lean kernel, compiled without GJK, EPA, the rounded and the chain pairs
+    (numba prunes the branches on the argument's type, as the solvers do for a world without
+    joints): SAT for sharp polygons, and circles against anything.  It returns count -1 for a
+    pair it does not handle, and the caller runs the whole kernel instead (``collide``).  Half
+    of the narrow phase's compile time is in what it leaves out.
     """
     ox, oy = B.x[a, 0], B.x[a, 1]
     ta, tb = F.shape[fa], F.shape[fb]
     if ta == CHAIN_SEGMENT or tb == CHAIN_SEGMENT:
+        if full is None:
+            return -1, 0.0, 0.0
         return _chain(B, F, V, fa, fb, a, b, ox, oy, margin, sc_a, sc_b, out_p, out_s, out_f)
     if ta == CIRCLE and tb == CIRCLE:
         return circle_circle(F.wcenter[fa, 0] - ox, F.wcenter[fa, 1] - oy, F.radius[fa],
@@ -130,7 +138,11 @@ def _manifold(B, F, V, fa, fb, a, b, method, margin, sc_a, sc_b, sw, si, lam, po
     na = V.wnormal[F.vstart[fa]:F.vstart[fa] + F.vcount[fa]]
     bias = BIAS * min(B.bound_r[a], B.bound_r[b])
     if ta == POLYGON and tb == POLYGON and F.radius[fa] == 0.0 and F.radius[fb] == 0.0:
+        if full is None:
+            return sat_pair(va, na, vb, nb, margin, bias, out_p, out_s, out_f)
         return polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p, out_s, out_f)
+    if full is None:
+        return -1, 0.0, 0.0
     return round_pair(va, na, F.radius[fa], vb, nb, F.radius[fb], margin, bias, out_p, out_s, out_f)
 
 
@@ -188,10 +200,12 @@ def manifold_scratch():
 
 
 @kernel
-def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev):
-    """Fill C (rows sorted by key, point state carried over from P); returns the row count.
+def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev, full=None):
+    """Fill C (rows sorted by key, point state carried over from P); returns the row count, or
+    -1 when ``full`` is None (the lean kernel: ``_manifold``) and a pair needs the whole kernel.
 
-    ``ctx``: the step context (physics/step/context.py: dt, spec, narrowphase).
+    ``ctx``: the step context (physics/step/context.py: dt, spec, narrowphase); ``full``: None
+    for the lean kernel (the narrow phase must be SAT), any integer for the whole one.
 
     Allocates the sort order and the scratch once per call; the per-pair work
     is ``_rows``.
@@ -200,7 +214,7 @@ def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev):
     order = np.argsort(keys)
     sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f = manifold_scratch()
     c = ctx[0]
-    return _rows(B, F, V, pairs, order, keys, C, P, n_prev, c.narrowphase, c.dt, c.spec,
+    return _rows(B, F, V, pairs, order, keys, C, P, n_prev, c.narrowphase, full, c.dt, c.spec,
                  sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f)
 
 
@@ -208,7 +222,7 @@ def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev):
 # dozens of array views that the inlined helpers bind per pair cost no atomic
 # reference-count updates (with them a box pair took ~800 ns instead of ~100).
 @kernel(_nrt=False)
-def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, dt, spec,
+def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, full, dt, spec,
           sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
     row = 0
     ptr = 0
@@ -220,8 +234,10 @@ def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, dt, spec,
         if not may_touch(B, a, b, dt, spec):
             continue
         margin = pair_margin(B, a, b, dt, spec)
-        count, nx, ny = _manifold(B, F, V, fa, fb, a, b, method, margin, sc_a, sc_b, sw, si, lam, poly,
+        count, nx, ny = _manifold(B, F, V, fa, fb, a, b, method, full, margin, sc_a, sc_b, sw, si, lam, poly,
                                   out_p, out_s, out_f)
+        if count < 0:
+            return -1       # the lean kernel met a pair it leaves out: the caller runs the whole one
         if count == 0:
             continue
         _write_row(C, row, B, F, fa, fb, a, b, keys[k], count, nx, ny, out_p, out_s, out_f)

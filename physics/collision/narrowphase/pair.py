@@ -22,6 +22,20 @@ assert METHODS == {"sat": SAT, "gjk": GJK}
 
 
 @kernel(inline="always")
+def sat_pair(va, na, vb, nb, margin, bias, out_p, out_s, out_f):
+    """SAT alone (``polygon_pair`` with method SAT, without compiling GJK and EPA): returns
+    (count, nx, ny); count 0 when the pair is apart beyond ``margin``."""
+    sa, fa = max_separation(va, na, vb)
+    if sa > margin:
+        return 0, 0.0, 0.0
+    sb, fb = max_separation(vb, nb, va)
+    if sb > margin:
+        return 0, 0.0, 0.0
+    flip, face, _ = choose_reference(sa, fa, sb, fb, bias)
+    return polygon_manifold(va, na, vb, nb, flip, face, margin, out_p, out_s, out_f)
+
+
+@kernel(inline="always")
 def polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p, out_s, out_f):
     """Returns (count, nx, ny); count 0 when the pair is apart beyond ``margin``."""
     flip, face = 0, 0

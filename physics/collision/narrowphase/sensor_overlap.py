@@ -22,8 +22,8 @@ def sensor_overlaps(ctx, B, F, V, spairs, ns, out):
         v = spairs[p, 1]
         # the orientation the contacts use (lower id first), so a pair is computed one way only
         fa, fb = (s, v) if F.id[s] < F.id[v] else (v, s)
-        count, nx, ny = _manifold(B, F, V, fa, fb, F.body[fa], F.body[fb], method, 0.0, sc_a, sc_b, sw, si, lam,
-                                  poly, out_p, out_s, out_f)
+        count, nx, ny = _manifold(B, F, V, fa, fb, F.body[fa], F.body[fb], method, 1, 0.0, sc_a, sc_b, sw, si,
+                                  lam, poly, out_p, out_s, out_f)
         hit = False
         for q in range(count):
             hit = hit or out_s[q] < 0.0
