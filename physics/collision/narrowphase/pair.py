@@ -23,8 +23,9 @@ assert METHODS == {"sat": SAT, "gjk": GJK}
 
 @kernel(inline="always")
 def sat_pair(va, na, vb, nb, margin, bias, out_p, out_s, out_f):
-    """SAT alone (``polygon_pair`` with method SAT, without compiling GJK and EPA): returns
-    (count, nx, ny); count 0 when the pair is apart beyond ``margin``."""
+    """One polygon pair by SAT alone (the lean narrow kernel's, and ``polygon_pair``'s for SAT
+    and for the GJK cases SAT settles): returns (count, nx, ny); count 0 when the pair is apart
+    beyond ``margin``."""
     sa, fa = max_separation(va, na, vb)
     if sa > margin:
         return 0, 0.0, 0.0
@@ -38,8 +39,6 @@ def sat_pair(va, na, vb, nb, margin, bias, out_p, out_s, out_f):
 @kernel(inline="always")
 def polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p, out_s, out_f):
     """Returns (count, nx, ny); count 0 when the pair is apart beyond ``margin``."""
-    flip, face = 0, 0
-    use_sat = method != GJK
     if method == GJK:
         sep, nx, ny = penetration(va, vb, sw, si, lam, poly)
         if sep > margin:
@@ -48,16 +47,9 @@ def polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p,
         # apart shapes whose closest features are two vertices: the faces next
         # to n need not separate (a long sliver reaching past a corner); the
         # manifold then needs a face that does, which SAT finds
-        use_sat = sep > 0.0 and s < 0.0
-    if use_sat:
-        sa, fa = max_separation(va, na, vb)
-        if sa > margin:
-            return 0, 0.0, 0.0
-        sb, fb = max_separation(vb, nb, va)
-        if sb > margin:
-            return 0, 0.0, 0.0
-        flip, face, _ = choose_reference(sa, fa, sb, fb, bias)
-    return polygon_manifold(va, na, vb, nb, flip, face, margin, out_p, out_s, out_f)
+        if not (sep > 0.0 and s < 0.0):
+            return polygon_manifold(va, na, vb, nb, flip, face, margin, out_p, out_s, out_f)
+    return sat_pair(va, na, vb, nb, margin, bias, out_p, out_s, out_f)
 
 
 @kernel
