@@ -42,7 +42,8 @@ def collide(ctx, B, F, V, pairs, npairs, contacts, limit: int = 1_000_000) -> in
         n = collide_kernel(ctx.array, B, F, V, pairs, int(npairs), contacts.cur, contacts.prev,
                            int(contacts.n_prev), None)
     if n < 0:
-        contacts.full = contacts.full or lean    # this world has such pairs: the whole kernel from now on
+        if lean:
+            contacts.full = True    # this world has such pairs: the whole kernel from now on
         n = collide_kernel(ctx.array, B, F, V, pairs, int(npairs), contacts.cur, contacts.prev,
                            int(contacts.n_prev), 1)
     contacts.n = int(n)
