@@ -105,8 +105,10 @@ def _add_record(world, r):
     (first, m), rest = r["parts"][0], r["parts"][1:]
     body = world.add_body(first, **pose, density=m["density"], restitution=m["restitution"],
                           friction=(m["mu_s"], m["mu_d"]))
-    for shape, m in rest:  # add_fixture keeps the body origin; mass and centre follow
-        body.add_fixture(shape, density=m["density"], friction=(m["mu_s"], m["mu_d"]), restitution=m["restitution"])
+    with world._placing_once():  # add_fixture keeps the body origin; mass and centre follow, once
+        for shape, m in rest:
+            body.add_fixture(shape, density=m["density"], friction=(m["mu_s"], m["mu_d"]),
+                             restitution=m["restitution"])
     return body
 
 

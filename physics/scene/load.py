@@ -81,10 +81,11 @@ def _add_body(world, b, fixtures, path, source):
     try:
         body = world.add_body([sh for sh, _ in fixtures], **kw)
         weighed = False
-        for fx, (_, fields) in zip(body.fixtures, fixtures):
-            for key, value in fields.items():
-                setattr(fx, key, value)
-                weighed |= key == "density"
+        with world._placing_once():
+            for fx, (_, fields) in zip(body.fixtures, fixtures):
+                for key, value in fields.items():
+                    setattr(fx, key, value)
+                    weighed |= key == "density"
         if weighed:  # place once more from the file's origin: x = origin + R com, as the saver assumes
             world._place_body(body, np.array(kw["position"], dtype=np.float64))
         return body
