@@ -22,107 +22,9 @@ from __future__ import annotations
 import os
 import time
 
-import numpy as np
-
-import physics
 from physics import options
-from physics.store.fixtures import CAPSULE, POLYGON
-from physics.collision import broadphase, narrowphase
-from physics.collision.broadphase.fixture_filter import filter_pairs
-
-
-def probe_world(solver: str, integrator: str = options.DEFAULT_INTEGRATOR, broadphase: str = "brute"):
-    """A small world with every body kind, both shape kinds, polygons of two vertex counts and a
-    spring to the world, so each stage meets every argument type a scene can give it."""
-    w = physics.World(solver=solver, integrator=integrator, broadphase=broadphase)
-    w.add_body(physics.Polygon.box(10, 1), kind="static", position=(0, -0.5))
-    w.add_body(physics.Polygon.box(1, 1), position=(0, 0.49))
-    w.add_body(physics.Polygon.box(1, 1), position=(0.2, 1.5), angle=0.1)
-    w.add_body(physics.Circle(0.4), position=(1.5, 0.45))
-    w.add_body(physics.Circle(0.4), position=(1.6, 1.3))
-    hexa = w.add_body(physics.Polygon.regular(6, 0.5), position=(-1.5, 0.45))
-    w.add_body(physics.Polygon.box(0.5, 0.5), kind="kinematic", position=(-3, 1), velocity=(0.1, 0))
-    w.add_spring(hexa, None, anchor_b=(-1.5, 2.0), stiffness=50.0, damping=0.5)
-    return w
-
-
-def _broad(bp):
-    w = probe_world(options.DEFAULT_SOLVER, broadphase=bp)
-    w._pipeline.refresh_geometry(w, w.dt)
-    s = w._store
-    n, pairs = broadphase.find_pairs(s.fixtures.view, s.fixtures.n, bp, w._pipeline._pairs)
-    filter_pairs(s.fixtures.view, pairs, n, w._pipeline._no_keys)
-
-
-def _narrow(kind: str = "lean"):
-    """The narrow phase's lean kernel (SAT; sharp polygons and circles), or with ``kind`` "full"
-    the whole one (GJK, EPA, rounded shapes, chains): physics/collision/narrowphase/kernel.py."""
-    w = probe_world(options.DEFAULT_SOLVER)
-    w._store.contacts.full = kind == "full"
-    p, s = w._pipeline, w._store
-    p._refresh(w, w.dt)
-    p.refresh_geometry(w, w.dt)
-    # no pairs: numba compiles for the argument types, so the broad phase is not needed here
-    narrowphase.collide(p.ctx, s.bodies.view, s.fixtures.view, s.verts.view, p._pairs, 0, s.contacts)
-
-
-def _solve(solver, integrator):
-    w = probe_world(solver, integrator)
-    p = w._pipeline
-    p._refresh(w, w.dt)
-    p.solve(w, w.dt)
-
-
-def _guard():
-    """The two kernels that open and close every step (physics/step/frame.py: checkpoint, energy
-    guard, finite check, touch events), the same for every mode."""
-    w = probe_world(options.DEFAULT_SOLVER)
-    p = w._pipeline
-    p._refresh(w, w.dt)
-    p.open_step(w)
-    p.close_step(w)
-
-
-def _frame():
-    w = probe_world(options.DEFAULT_SOLVER)
-    p = w._pipeline
-    p._refresh(w, w.dt)
-    w.render_data()
-    p.sleep(w, w.dt)
-    w.contacts()
-    w.query_point((0.0, 0.5))
-    w.ray_cast((-5.0, 0.5), (5.0, 0.5), first=True)     # the laser tool's beams
-    w.ray_cast((-5.0, 0.5), (5.0, 0.5))
-
-
-def _extras():
-    probe_world(options.DEFAULT_SOLVER).quadtree_cells()
-
-
-def _step(solver, integrator, bp, kind="lean"):
-    w = probe_world(solver, integrator, bp)
-    w._store.contacts.full = kind == "full"
-    for _ in range(3):
-        w.step()
-    w.render_data()
-    w.contacts()
-    w.query_point((0.0, 0.5))
-
-
-def _joints(solver, integrator):
-    """A step of the probe world with one joint of every kind the sandbox's tools make (and the
-    mouse drag's), so the joint stage of this mode is in the cache."""
-    w = probe_world(solver, integrator)
-    ground, box, top, disc = w.bodies[0], w.bodies[1], w.bodies[2], w.bodies[3]
-    w.add_joint("revolute", top, box, anchor=(0.1, 1.0), motor_speed=1.0, max_motor_torque=5.0)
-    w.add_joint("weld", box, ground, anchor=(0.0, 0.0))
-    w.add_joint("prismatic", top, None, anchor=(0.2, 1.5), axis=(0.0, 1.0), lower=-1.0, upper=1.0)
-    w.add_joint("distance", disc, None, anchor_b=(1.5, 3.0), max_length=3.0)
-    w.add_joint("wheel", box, w.bodies[4], anchor=(1.6, 1.3))
-    w.add_joint("motor", w.bodies[5], ground)
-    w.add_joint("mouse", w.bodies[4], None, target=(2.0, 2.0))
-    for _ in range(3):
-        w.step()
+from physics.compile_units import (_marker, cache_dir, cached, mark, needs_full_narrowphase,  # noqa: F401
+                                   probe_world, run_unit)  # (the app's names)
 
 
 def run(unit: str) -> None:
@@ -140,12 +42,7 @@ def run(unit: str) -> None:
 
 
 def _run(unit: str) -> None:
-    kind, *args = unit.split(":")
-    fn = {"broad": _broad, "narrow": _narrow, "guard": _guard, "solve": _solve, "frame": _frame,
-          "extras": _extras, "step": _step, "joints": _joints}.get(kind)
-    if fn is None:
-        raise ValueError(f"unknown compile unit {unit!r}")
-    fn(*args)
+    run_unit(unit)
 
 
 NARROW_UNITS = ("narrow", "narrow:full")
@@ -157,13 +54,7 @@ def narrow_unit(world) -> str:
     rounded polygon) or a chain, or it has met such a pair before: then "narrow:full".  (Shape
     for shape this says "full" for a few worlds the lean kernel would serve, such as capsules
     that only meet circles: the wait is then for nothing, never a compile in the window.)"""
-    s = world._store
-    if world.narrowphase != "sat" or s.contacts.full:
-        return "narrow:full"
-    n = s.fixtures.n
-    shape = s.fixtures.view.shape[:n]
-    rounded = (shape == POLYGON) & (s.fixtures.view.radius[:n] > 0.0)
-    return "narrow:full" if bool(np.any(shape >= CAPSULE) or np.any(rounded)) else "narrow"
+    return "narrow:full" if needs_full_narrowphase(world) else "narrow"
 
 
 def gate_units(solver: str, integrator: str, broadphase: str, narrow: str = "narrow"):
@@ -191,36 +82,6 @@ def background_units(solver: str, integrator: str, broadphase: str, narrow: str 
 
 def joints_unit(solver: str, integrator: str) -> str:
     return f"joints:{solver}:{integrator}"
-
-
-def cache_dir():
-    """numba's cache directory for this version of ``physics/`` (None when caching is off)."""
-    from pathlib import Path
-
-    import numba.core.config as cfg
-    return Path(cfg.CACHE_DIR) if cfg.CACHE_DIR else None
-
-
-def _marker(unit: str):
-    d = cache_dir()
-    return None if d is None else d / f"unit-{unit.replace(':', '-')}.ok"
-
-
-def cached(unit: str) -> bool:
-    """Has ``unit`` been compiled into this cache (a marker file beside numba's)?"""
-    m = _marker(unit)
-    return m is not None and m.exists()
-
-
-def mark(unit: str) -> None:
-    """Note that ``unit``'s kernels are in the cache (the cache directory is keyed on the physics
-    sources, so the marker goes with them)."""
-    m = _marker(unit)
-    if m is not None:
-        try:
-            m.write_text("")
-        except OSError:
-            pass
 
 
 class unit_lock:

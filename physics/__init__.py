@@ -22,7 +22,7 @@ from .world import World
 
 __all__ = ["World", "Body", "Fixture", "Spring", "Joint", "RayHit", "ShapeHit", "Polygon", "Circle", "Capsule", "Segment", "Chain", "ChainSegment", "decompose", "SceneError", "SimulationError",
            "ContactEvents", "ContactBeginEvent", "ContactHitEvent", "SensorEvents",
-           "load_scene", "save_scene", "solvers_available", "tune"]
+           "load_scene", "save_scene", "solvers_available", "tune", "precompile"]
 
 
 def load_scene(path):
@@ -36,6 +36,19 @@ def save_scene(world, path, name=None, description=None) -> None:
     world's metadata in the file.  Raises OSError if it cannot be written (the old file is kept)."""
     from .scene.save import save_scene as _save
     _save(world, path, name=name, description=description)
+
+
+def precompile(what=None, jobs: int = 1, progress=None):
+    """Compile the kernels ``what`` needs into numba's disk cache before the first step.
+
+    ``what``: a World (what its next step needs), a solver mode name or a list of them (every
+    kernel of those modes), or None for all.  ``jobs``: worker processes sharing the cache (the
+    machine's cores: ``physics.compile_units.default_jobs()``).  ``progress``: called with one line per
+    finished unit (default: printed to stderr).  Returns ``[(unit, wall s, CPU s), ...]``.  Also
+    ``python -m physics precompile [SCENE ...] [--mode M] [--jobs N]``.
+    """
+    from .compile_units import precompile as _pre
+    return _pre(what, jobs=jobs, progress=progress)
 
 
 def solvers_available() -> list[str]:

@@ -16,7 +16,9 @@ import json
 import math
 import os
 import sys
+import time
 
+from . import options
 from .errors import SceneError, SimulationError
 
 # world attributes --set may change besides the solver's own settings
@@ -83,9 +85,30 @@ def _parser() -> argparse.ArgumentParser:
     inf.set_defaults(run=info)
     from .tuning.command import add_parser as add_tune
     add_tune(sub, _count)
+    pre = sub.add_parser("precompile", help="compile the kernels into numba's disk cache ahead of the first step")
+    pre.add_argument("scenes", nargs="*", metavar="SCENE", help="compile what these scenes need (default: every mode)")
+    pre.add_argument("--mode", action="append", choices=options.SOLVERS, help="every unit of this mode (repeatable)")
+    pre.add_argument("--jobs", type=_count, default=0, help="worker processes (default: the machine's cores)")
+    pre.set_defaults(run=precompile_cmd)
     sch = sub.add_parser("schema", help="print the scene format's JSON Schema (scenes/stelkropp.schema.json)")
     sch.set_defaults(run=schema)
     return p
+
+
+def precompile_cmd(args) -> int:
+    """``precompile``: the kernels of the given scenes (or modes, or all) into the cache, with a
+    line of progress per unit (physics/compile_units.py)."""
+    from .compile_units import default_jobs, precompile
+    from .scene import load_scene
+    jobs = args.jobs or default_jobs()
+    t0 = time.time()
+    if args.scenes:
+        for path in args.scenes:
+            precompile(load_scene(path), jobs=jobs)
+    else:
+        precompile(args.mode, jobs=jobs)
+    print(f"precompiled in {time.time() - t0:.1f} s on {jobs} process(es)", file=sys.stderr)
+    return 0
 
 
 def _count(text: str) -> int:

@@ -17,3 +17,15 @@ _hypothesis_settings.register_profile("explore", derandomize=False, print_blob=T
 import os as _os  # noqa: E402
 
 _hypothesis_settings.load_profile(_os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+
+
+def pytest_addoption(parser):
+    parser.addoption("--box2d-src", metavar="DIR", default=None,
+                     help="Box2D v3 source tree for the tests that run it beside Stelkropp "
+                          "(default: $STELKROPP_BOX2D_SRC, else ../shared/reference/box2d-v3; none: they skip)")
+
+
+def pytest_configure(config):
+    src = config.getoption("--box2d-src")
+    if src:  # the bench's builder reads the variable (bench/box2d/build.py find_source)
+        _os.environ["STELKROPP_BOX2D_SRC"] = str(Path(src).expanduser().resolve())

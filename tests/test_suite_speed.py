@@ -15,9 +15,11 @@ from bench.suite.ragdoll import rain
 from bench.suite_speed import _ours, run_scene
 from physics.scene import scene_from_dict
 from physics.errors import SceneError
+from box2d_ref import box2d_v3
 
 
 def test_a_small_large_pyramid_runs_in_every_engine_interleaved():
+    box2d_v3()  # Box2D v3 runs beside us here (skips, saying why, only without its sources)
     row = run_scene("large_pyramid", steps=41, chunk=10, warm=10, desc=large_pyramid(base=8))
     assert row["status"] == "ok" and row["steps_done"] == 41
     assert set(row["ms_step"]) == {OURS, B1, B2, PM}
@@ -29,11 +31,13 @@ def test_a_small_large_pyramid_runs_in_every_engine_interleaved():
 
 
 def test_a_joint_scene_is_timed_in_stelkropp_and_box2d():
+    box2d_v3()  # Box2D v3 runs beside us here (skips, saying why, only without its sources)
     row = run_scene("joint_grid", steps=21, chunk=10, warm=10, desc=joint_grid(n=4))
     assert row["status"] == "ok" and OURS in row["ms_step"] and math.isfinite(row["ratio"][B1])
 
 
 def test_rain_times_the_ragdolls_its_events_add_on_both_sides():
+    box2d_v3()  # Box2D v3 runs beside us here (skips, saying why, only without its sources)
     # 3 event steps (0, 8, 16) of 25 ragdolls of 11 bodies: ours must time them, not the bare ground
     row = run_scene("rain", steps=21, chunk=10, warm=10, desc=rain(steps=21))
     assert row["status"] == "ok" and row["bodies_end"] == 1 + 3 * 25 * 11

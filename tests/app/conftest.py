@@ -71,9 +71,13 @@ def app_env(display, tmp_path_factory):
     env.pop("PYOPENGL_PLATFORM", None)
     cache = tmp_path_factory.mktemp("cache")
     env["XDG_CACHE_HOME"] = str(cache)
-    # the compiled kernels stay in one place for the session even where a test gives the sandbox
-    # its own XDG_CACHE_HOME (autosaves)
-    env.setdefault("STELKROPP_CACHE_DIR", str(cache / "stelkropp"))
+    # the sandbox loads the kernels from the cache the tests (and `python -m physics precompile`)
+    # filled, also where a test gives it its own XDG_CACHE_HOME (autosaves): the window tests
+    # check the sandbox, not numba's compiler (tests/app/test_launch.py times a cold launch)
+    from physics import _jit  # sets NUMBA_CACHE_DIR (this source's cache) unless the user chose one
+    env["STELKROPP_CACHE_DIR"] = str(_jit._cache_root())
+    if os.environ.get("NUMBA_CACHE_DIR"):
+        env["NUMBA_CACHE_DIR"] = os.environ["NUMBA_CACHE_DIR"]
     return env
 
 
@@ -215,3 +219,12 @@ def launch(app_env, tmp_path):
         p.close()
 
 
+
+
+def pytest_collection_modifyitems(config, items):
+    """Run the window tests on one xdist worker, one at a time (`--dist loadgroup`): two sandboxes
+    drawing on llvmpipe at once would each get half a core, and their frame-timed waits would
+    measure the other's load; the physics tests share out the other worker."""
+    for item in items:
+        if "tests/app/" in str(item.fspath).replace("\\", "/"):
+            item.add_marker(pytest.mark.xdist_group("app"))

@@ -1,0 +1,281 @@
+"""Compile the core's kernels ahead of the first step: ``physics.precompile(...)``.
+
+numba compiles a kernel on its first call and keeps the machine code in its disk cache
+(physics/_jit.py).  A step runs independent groups of kernels, called *units* here: one broad
+phase, the narrow phase (the lean kernel, or the full one with GJK, EPA, rounded shapes and
+chains), the solver mode's step, its joint stage, the kernels that open and close a step, and
+the rest of a frame (geometry, islands, contacts, picking, queries).  Each unit calls its group's
+entry points on a small throwaway world: only the argument types matter to the compiler, so the
+results are thrown away.  Units share no state, so several processes can fill one cache at once,
+each with its own units; a later process loads them all from disk.
+
+Unit names: ``broad:<broadphase>``, ``narrow`` (lean), ``narrow:full``, ``solve:<mode>:<integrator>``,
+``joints:<mode>:<integrator>``, ``guard``, ``frame``, ``extras`` (quadtree cells, shape casts),
+``coloured`` (soft_step's coloured layout) and ``step:<mode>:<integrator>:<broadphase>[:full]``
+(a whole step: whatever the others left).  The sandbox, CI (``python -m physics precompile``)
+and the tuner all go through here.
+"""
+from __future__ import annotations
+
+import os
+import sys
+import time
+
+from . import options
+
+
+def probe_world(solver: str = options.DEFAULT_SOLVER, integrator: str = options.DEFAULT_INTEGRATOR,
+                broadphase: str = "brute"):
+    """A small world with every body kind, both sharp shape kinds, polygons of two vertex counts
+    and a spring to the world, so each stage meets every argument type a scene can give it."""
+    from . import Circle, Polygon, World
+    w = World(solver=solver, integrator=integrator, broadphase=broadphase)
+    w.add_body(Polygon.box(10, 1), kind="static", position=(0, -0.5))
+    w.add_body(Polygon.box(1, 1), position=(0, 0.49))
+    w.add_body(Polygon.box(1, 1), position=(0.2, 1.5), angle=0.1)
+    w.add_body(Circle(0.4), position=(1.5, 0.45))
+    w.add_body(Circle(0.4), position=(1.6, 1.3))
+    hexa = w.add_body(Polygon.regular(6, 0.5), position=(-1.5, 0.45))
+    w.add_body(Polygon.box(0.5, 0.5), kind="kinematic", position=(-3, 1), velocity=(0.1, 0))
+    w.add_spring(hexa, None, anchor_b=(-1.5, 2.0), stiffness=50.0, damping=0.5)
+    return w
+
+
+def _broad(bp):
+    from .collision import broadphase
+    from .collision.broadphase.fixture_filter import filter_pairs
+    w = probe_world(broadphase=bp)
+    w._pipeline.refresh_geometry(w, w.dt)
+    s = w._store
+    n, pairs = broadphase.find_pairs(s.fixtures.view, s.fixtures.n, bp, w._pipeline._pairs)
+    filter_pairs(s.fixtures.view, pairs, n, w._pipeline._no_keys)
+
+
+def _narrow(kind: str = "lean"):
+    """The narrow phase's lean kernel (SAT; sharp polygons and circles), or with ``kind`` "full"
+    the whole one (GJK, EPA, rounded shapes, chains): physics/collision/narrowphase/kernel.py."""
+    from .collision import narrowphase
+    w = probe_world()
+    w._store.contacts.full = kind == "full"
+    p, s = w._pipeline, w._store
+    p._refresh(w, w.dt)
+    p.refresh_geometry(w, w.dt)
+    # no pairs: numba compiles for the argument types, so the broad phase is not needed here
+    narrowphase.collide(p.ctx, s.bodies.view, s.fixtures.view, s.verts.view, p._pairs, 0, s.contacts)
+
+
+def _solve(solver, integrator):
+    w = probe_world(solver, integrator)
+    p = w._pipeline
+    p._refresh(w, w.dt)
+    p.solve(w, w.dt)
+
+
+def _guard():
+    """The two kernels that open and close every step (physics/step/frame.py: checkpoint, energy
+    guard, finite check, touch events), the same for every mode."""
+    w = probe_world()
+    p = w._pipeline
+    p._refresh(w, w.dt)
+    p.open_step(w)
+    p.close_step(w)
+
+
+def _frame():
+    w = probe_world()
+    p = w._pipeline
+    p._refresh(w, w.dt)
+    w.render_data()
+    p.sleep(w, w.dt)
+    w.contacts()
+    w.query_point((0.0, 0.5))
+    w.ray_cast((-5.0, 0.5), (5.0, 0.5), first=True)     # the sandbox's laser beams
+    w.ray_cast((-5.0, 0.5), (5.0, 0.5))
+
+
+def _extras():
+    """The quadtree overlay and the shape queries (physics/queries)."""
+    from . import Circle
+    w = probe_world()
+    w.quadtree_cells()
+    w.step()
+    w.query_aabb((-1.0, -1.0), (1.0, 1.0))
+    w.overlap(Circle(0.2), (0.0, 0.5))
+    w.shape_cast(Circle(0.2), (0.0, 5.0), 0.0, (0.0, -5.0))
+
+
+def _coloured():
+    """soft_step's coloured (wide) contact layout: its own kernels."""
+    w = probe_world()
+    w.settings["solver_layout"] = "coloured"
+    for _ in range(3):
+        w.step()
+
+
+def _step(solver, integrator, bp, kind="lean"):
+    w = probe_world(solver, integrator, bp)
+    w._store.contacts.full = kind == "full"
+    for _ in range(3):
+        w.step()
+    w.render_data()
+    w.contacts()
+    w.query_point((0.0, 0.5))
+
+
+def _joints(solver, integrator):
+    """A step of the probe world with one joint of every kind the sandbox's tools make (and the
+    mouse drag's), so the joint stage of this mode is in the cache."""
+    w = probe_world(solver, integrator)
+    ground, box, top, disc = w.bodies[0], w.bodies[1], w.bodies[2], w.bodies[3]
+    w.add_joint("revolute", top, box, anchor=(0.1, 1.0), motor_speed=1.0, max_motor_torque=5.0)
+    w.add_joint("weld", box, ground, anchor=(0.0, 0.0))
+    w.add_joint("prismatic", top, None, anchor=(0.2, 1.5), axis=(0.0, 1.0), lower=-1.0, upper=1.0)
+    w.add_joint("distance", disc, None, anchor_b=(1.5, 3.0), max_length=3.0)
+    w.add_joint("wheel", box, w.bodies[4], anchor=(1.6, 1.3))
+    w.add_joint("motor", w.bodies[5], ground)
+    w.add_joint("mouse", w.bodies[4], None, target=(2.0, 2.0))
+    for _ in range(3):
+        w.step()
+
+
+_UNITS = {"broad": _broad, "narrow": _narrow, "guard": _guard, "solve": _solve, "frame": _frame,
+          "extras": _extras, "coloured": _coloured, "step": _step, "joints": _joints}
+
+
+def run_unit(unit: str) -> None:
+    """Compile (or load from the cache) the kernels of ``unit``; ValueError for an unknown name."""
+    kind, *args = unit.split(":")
+    fn = _UNITS.get(kind)
+    if fn is None:
+        raise ValueError(f"unknown compile unit {unit!r}")
+    fn(*args)
+
+
+def _integrators(solver: str) -> tuple:
+    from . import solvers
+    return options.INTEGRATORS if solvers.get(solver).uses_integrator else (options.DEFAULT_INTEGRATOR,)
+
+
+def units(world=None, modes=None) -> list[str]:
+    """The units a world (or, with ``world`` None, every mode in ``modes``: default all) needs,
+    the ones every step runs first, then the costliest first so two processes end together."""
+    if world is not None:
+        from .collision.broadphase import resolve
+        bp = resolve(world.broadphase, world._store.fixtures.n)
+        narrow = "narrow:full" if needs_full_narrowphase(world) else "narrow"
+        out = [f"solve:{world.solver}:{world.integrator}", narrow, f"broad:{bp}", "guard", "frame"]
+        if world._store.joints.n:
+            out.append(f"joints:{world.solver}:{world.integrator}")
+        out.append(f"step:{world.solver}:{world.integrator}:{bp}" + (":full" if narrow != "narrow" else ""))
+        return out
+    modes = options.SOLVERS if modes is None else tuple(modes)
+    out = []
+    for m in modes:
+        out += [f"solve:{m}:{i}" for i in _integrators(m)]
+    out += ["narrow", "narrow:full", "guard", "frame", "broad:brute", "broad:sweep", "broad:quadtree"]
+    for m in modes:
+        out += [f"joints:{m}:{i}" for i in _integrators(m)]
+    if options.DEFAULT_SOLVER in modes:
+        out.append("coloured")
+    out.append("extras")
+    out += [f"step:{m}:{options.DEFAULT_INTEGRATOR if options.DEFAULT_INTEGRATOR in _integrators(m) else _integrators(m)[0]}:sweep:full"
+            for m in modes]
+    return out
+
+
+def needs_full_narrowphase(world) -> bool:
+    """Does ``world`` step with the full narrow-phase kernel (GJK chosen, a rounded shape, a
+    capsule, segment or chain, or such a pair met before) rather than the lean SAT one?"""
+    import numpy as np
+
+    from .store.fixtures import CAPSULE, POLYGON
+    s = world._store
+    if world.narrowphase != "sat" or s.contacts.full:
+        return True
+    n = s.fixtures.n
+    shape = s.fixtures.view.shape[:n]
+    rounded = (shape == POLYGON) & (s.fixtures.view.radius[:n] > 0.0)
+    return bool(np.any(shape >= CAPSULE) or np.any(rounded))
+
+
+def cache_dir():
+    """numba's cache directory for this version of ``physics/`` (None when caching is off)."""
+    from pathlib import Path
+
+    import numba.core.config as cfg
+    return Path(cfg.CACHE_DIR) if cfg.CACHE_DIR else None
+
+
+def _marker(unit: str):
+    d = cache_dir()
+    return None if d is None else d / f"unit-{unit.replace(':', '-')}.ok"
+
+
+def cached(unit: str) -> bool:
+    """Has ``unit`` been compiled into this cache (a marker file beside numba's)?"""
+    m = _marker(unit)
+    return m is not None and m.exists()
+
+
+def mark(unit: str) -> None:
+    """Note that ``unit``'s kernels are in the cache (the cache directory is keyed on the physics
+    sources, so the marker goes with them)."""
+    m = _marker(unit)
+    if m is not None:
+        try:
+            m.write_text("")
+        except OSError:
+            pass
+
+
+def _worker(unit: str):
+    t0, c0 = time.time(), time.process_time()
+    run_unit(unit)
+    mark(unit)
+    return unit, time.time() - t0, time.process_time() - c0
+
+
+def precompile(what=None, jobs: int = 1, progress=None) -> list[tuple[str, float, float]]:
+    """Compile what ``what`` needs into numba's disk cache, on ``jobs`` processes.
+
+    ``what``: a :class:`~physics.World` (the units its next step and its joints need), a mode
+    name or a list of them (every unit of those modes), or None for every mode.  ``progress``:
+    called with one line per finished unit (default: print to stderr).  Returns
+    ``[(unit, wall seconds, CPU seconds), ...]`` in the order they finished.  With ``jobs`` > 1
+    the units run in worker processes that share the cache directory; a unit that fails raises
+    here after the others finished.
+    """
+    from . import World
+    if isinstance(what, World):
+        todo = units(world=what)
+    elif what is None or what == "all":
+        todo = units()
+    else:
+        todo = units(modes=[what] if isinstance(what, str) else list(what))
+    say = progress if progress is not None else (lambda line: print(line, file=sys.stderr, flush=True))
+    done = []
+    if jobs <= 1:
+        for k, u in enumerate(todo, 1):
+            done.append(_worker(u))
+            say(f"[{k}/{len(todo)}] {u}: {done[-1][1]:.1f} s")
+        return done
+    import concurrent.futures as cf
+    import multiprocessing as mp
+    with cf.ProcessPoolExecutor(max_workers=jobs, mp_context=mp.get_context("spawn")) as pool:
+        futures = [pool.submit(_worker, u) for u in todo]
+        errors = []
+        for k, fut in enumerate(cf.as_completed(futures), 1):
+            try:
+                done.append(fut.result())
+                say(f"[{k}/{len(todo)}] {done[-1][0]}: {done[-1][1]:.1f} s")
+            except Exception as exc:  # noqa: BLE001  (report every failure, then raise the first)
+                errors.append(exc)
+                say(f"[{k}/{len(todo)}] failed: {type(exc).__name__}: {exc}")
+    if errors:
+        raise errors[0]
+    return done
+
+
+def default_jobs() -> int:
+    """Worker processes for a precompile: the machine's cores (at least one)."""
+    return max(1, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1))
