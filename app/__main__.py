@@ -14,6 +14,9 @@ def parse_args(argv=None):
     ap.add_argument("--frames", type=int, default=None, help="stop after N frames once the scene is ready")
     ap.add_argument("--screenshot", default=None, help="save a PNG of the last frame (with --frames)")
     ap.add_argument("--exit", action="store_true", help="exit after --frames (status 3 on any OpenGL error)")
+    ap.add_argument("--tour", nargs="+", metavar="SCENE", default=None,
+                    help="then open each SCENE in turn, --frames frames each; --screenshot is then a folder "
+                         "that receives <scene>.png and <scene>.json per scene (app/tour.py); exits after the last")
     ap.add_argument("--benchmark-frames", type=int, default=None,
                     help="run N frames unthrottled, one physics step each, and print the frame-time split")
     ap.add_argument("--plot", action="store_true",
@@ -51,7 +54,10 @@ def main(argv=None) -> int:
     frames = args.frames
     if frames is None and args.benchmark_frames:
         frames = args.benchmark_frames + 10
-    if args.status or args.control or args.screenshot or args.exit:
+    if args.tour:
+        from .tour import Tour
+        Tour(args.tour, frames or 120, args.screenshot or ".").attach(loop)
+    elif args.status or args.control or args.screenshot or args.exit:
         from .automation import Automation
         Automation(args.status, args.control, frames, args.screenshot, args.exit).attach(loop)
     if args.benchmark_frames:

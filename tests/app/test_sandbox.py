@@ -143,14 +143,25 @@ def test_bad_file_keeps_scene_and_shows_error(launch, tmp_path):
     assert st["n_bodies"] == n0 and not st["gl_errors"]
 
 
+@pytest.fixture(scope="module")
+def tour(app_env, tmp_path_factory):
+    """Every shipped scene opened in turn in one sandbox (``--tour``: the scene panel's way of
+    opening a scene), 120 frames each: (exit status and output, the folder of <scene>.png and
+    <scene>.json, each json the status at that scene's last frame with its own errors)."""
+    out = tmp_path_factory.mktemp("tour")
+    r = subprocess.run([sys.executable, "-m", "app", str(SHIPPED[0]), "--frames", "120", "--screenshot", str(out),
+                        "--tour", *map(str, SHIPPED[1:]), "--no-autosave-offer"],
+                       cwd=ROOT, env=app_env, capture_output=True, text=True, timeout=1800)
+    return r, out
+
+
 @pytest.mark.parametrize("scene", SHIPPED, ids=[p.stem for p in SHIPPED])
-def test_shipped_scene_renders_120_frames(scene, app_env, tmp_path):
-    shot = tmp_path / f"{scene.stem}.png"
-    r = subprocess.run([sys.executable, "-m", "app", str(scene), "--frames", "120", "--screenshot", str(shot),
-                        "--exit", "--no-autosave-offer", "--status", str(tmp_path / "st.json")],
-                       cwd=ROOT, env=app_env, capture_output=True, text=True, timeout=900)
+def test_shipped_scene_renders_120_frames(scene, tour):
+    r, out = tour
     assert r.returncode == 0, r.stdout + r.stderr
-    st = json.loads((tmp_path / "st.json").read_text())
+    shot = out / f"{scene.stem}.png"
+    assert shot.is_file(), f"{scene.name} was not reached: {r.stdout + r.stderr}"
+    st = json.loads(shot.with_suffix(".json").read_text())
     assert not st["gl_errors"] and not st["scene_errors"], st
     assert st["path"].endswith(scene.name)
     from PIL import Image

@@ -1,0 +1,54 @@
+"""``--tour SCENE ...``: after the launch scene, open each given scene in turn in the same window.
+
+Each scene (the launch scene first) runs ``--frames`` frames once its kernels are ready; then its
+last frame is saved as ``<stem>.png`` in the ``--screenshot`` folder, beside ``<stem>.json``, the
+status the tests read (automation.status) with the OpenGL and scene errors of that scene alone.
+The next scene is opened the way the scene panel opens one (SceneFiles.open_scene); after the last
+the window exits.  One window for many scenes saves a process start and a kernel load per scene.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from .automation import screenshot, status
+
+
+class Tour:
+    def __init__(self, scenes, frames: int, out_dir):
+        self.queue = [Path(s) for s in scenes]
+        self.frames = frames
+        self.out = Path(out_dir)
+        self.out.mkdir(parents=True, exist_ok=True)
+        self._gl0 = 0
+        self._shot = None
+
+    def attach(self, loop):
+        loop.hooks.append(self)
+        loop.stop_on_error = True
+        return self
+
+    def _stem(self, window) -> str:
+        path = window.editor.doc.path
+        return Path(path).stem if path else "untitled"
+
+    def before_swap(self, loop):
+        if self._shot is None and loop.ready_frames >= self.frames:
+            self._shot = self.out / f"{self._stem(loop.window)}.png"
+            screenshot(loop.window, self._shot)
+
+    def after_swap(self, loop):
+        if self._shot is None:
+            return
+        w = loop.window
+        st = status(w)
+        st["gl_errors"] = list(w.gl_errors[self._gl0:])
+        st["scene_errors"] = list(w.files.errors)
+        self._shot.with_suffix(".json").write_text(json.dumps(st))
+        self._shot = None
+        if not self.queue:
+            loop.stop = True
+            return
+        self._gl0 = len(w.gl_errors)
+        w.files.open_scene(self.queue.pop(0))
+        loop.ready_frames = 0
