@@ -86,9 +86,11 @@ def test_reference_scenes_match():
     from bench.engines import ENGINES, build
     from bench.scenes import pyramid
     d = with_world(pyramid(4), sleeping=False)
-    ours, pm, b2, b3 = (build(e, d) for e in ENGINES)
+    ours, pm, b2 = (build(e, d) for e in ENGINES if e != "box2d_v3")
     assert np.allclose(ours.state()[0], pm.state()[0]) and np.allclose(ours.state()[0], b2.state()[0], atol=1e-6)
-    assert np.allclose(ours.state()[0], b3.state()[0], atol=1e-6) and np.allclose(b3.masses[1:], 1.0)
+    if sources_present():  # Box2D v3 too where its sources are (always in CI)
+        b3 = build("box2d_v3", d)
+        assert np.allclose(ours.state()[0], b3.state()[0], atol=1e-6) and np.allclose(b3.masses[1:], 1.0)
     masses_pm = [b.mass for b in pm.bodies if b.body_type == b.DYNAMIC]
     masses_b2 = [b.mass for b in b2.bodies if b.type == 2]
     assert np.allclose(masses_pm, 1.0) and np.allclose(masses_b2, 1.0, rtol=1e-6)
