@@ -44,7 +44,7 @@ class BodiesMixin:
         B.island[s] = -1
         B.awake[s] = 1
         h = Body(self, oid)
-        h._fixtures = [self._new_fixture(h, sh, dens, rest, mu_s, mu_d) for sh in shapes]
+        h._fixtures = self._new_fixtures(h, shapes, dens, rest, mu_s, mu_d)
         self._place_body(h, pos)
         if B.kind[s] != STATIC:
             B.v[s] = vel
