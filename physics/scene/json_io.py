@@ -13,6 +13,8 @@ import json
 import math
 import os
 
+from .file_kind import open_regular
+
 
 class NonFinite:
     """Stands in for a number that is no finite float (NaN, Infinity, 1e400, a 400-digit
@@ -83,11 +85,13 @@ def parse(text: str):
 
 
 def read_text(path, max_bytes: int) -> str:
-    """The file's text, refusing oversized files before reading them (OSError, ValueError)."""
-    size = os.stat(path).st_size
-    if size > max_bytes:
-        raise ValueError(f"file is {size / 2**20:.1f} MB; scene files are limited to {max_bytes / 2**20:.0f} MB")
-    with open(path, "rb") as f:
+    """The file's text, refusing oversized files before reading them (OSError, ValueError) and
+    anything but a regular file (file_kind.NotRegularFile, an OSError)."""
+    fd = open_regular(path)  # a FIFO or device would block or never end
+    with os.fdopen(fd, "rb") as f:
+        size = os.fstat(f.fileno()).st_size
+        if size > max_bytes:
+            raise ValueError(f"file is {size / 2**20:.1f} MB; scene files are limited to {max_bytes / 2**20:.0f} MB")
         data = f.read(max_bytes + 1)  # the file may have grown since stat
     if len(data) > max_bytes:
         raise ValueError(f"file is over the {max_bytes / 2**20:.0f} MB limit for scene files")
