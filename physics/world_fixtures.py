@@ -135,6 +135,7 @@ class FixturesMixin:
 
         The body origin (``origin``, else where it is) and angle stay; the centre of mass moves.
         """
+        self._check_editable("the body's fixtures")
         s = body._s
         B = self._bodies.view
         F = self._store.fixtures.view
@@ -216,6 +217,7 @@ class FixturesMixin:
     def _add_fixture(self, body, shape, density=None, friction=None, restitution=None, category=DEFAULT_CATEGORY,
                      mask=ALL_BITS, group=0, name=None, sensor=False) -> Fixture:
         """Body.add_fixture: validated; material defaults to the body's first fixture's."""
+        self._check_editable("add_fixture")
         shapes = shape_list(shape)
         if len(shapes) != 1:
             raise ValueError("shape: add_fixture takes one shape (a chain: add it to the body with add_body)")
@@ -235,6 +237,7 @@ class FixturesMixin:
 
     def _remove_fixture(self, body, fx) -> None:
         """Body.remove_fixture: ValueError for a fixture of another body or the body's last one."""
+        self._check_editable("remove_fixture")
         if not isinstance(fx, Fixture) or fx.body is not body or not fx.alive:
             raise ValueError(f"remove_fixture: {fx!r} is not a live fixture of this body")
         rest = [f for f in body._fixtures if f is not fx]
@@ -250,6 +253,7 @@ class FixturesMixin:
 
     def _set_sensor(self, fx, value) -> None:
         """Fixture.sensor's setter: the body's mass follows; its contacts end or begin next step."""
+        self._check_editable("sensor")
         on = flag(value, "sensor")
         F = self._store.fixtures.view
         f = fx._f

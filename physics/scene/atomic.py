@@ -26,7 +26,7 @@ def write_atomic(path, text: str) -> None:
     Raises OSError (the old file untouched, no temporary file left) if it cannot be written,
     file_kind.NotRegularFile (an OSError) if ``path`` is a folder, FIFO, device or socket.
     """
-    target = os.path.realpath(os.fspath(path))  # through symlinks: replace the target, keep the link
+    target = os.path.realpath(scene_path(path))  # through symlinks: replace the target, keep the link
     check_writable_target(target)  # a FIFO or device must not be replaced by the rename
     folder, name = os.path.split(target)
     prefix = _temp_prefix(folder, name)
@@ -53,6 +53,15 @@ def write_atomic(path, text: str) -> None:
     finally:
         _IN_FLIGHT.discard(tmp)
     _sync_folder(folder)
+
+
+def scene_path(path) -> str:
+    """``path`` (str, bytes or os.PathLike) as a str (bytes decoded as the file system does, so any
+    name round-trips); TypeError naming what was given for anything else (an int would be taken
+    for an open file descriptor)."""
+    if not isinstance(path, (str, bytes, os.PathLike)):
+        raise TypeError(f"path: expected a str, bytes or os.PathLike file name, got {type(path).__name__}")
+    return os.fsdecode(os.fspath(path))
 
 
 def _temp_prefix(folder: str, name: str) -> str:
