@@ -110,3 +110,47 @@ def test_a_big_file_validates_in_seconds(tmp_path, kind):
     seconds, run = _validate_seconds(p)
     assert seconds < 10.0, (seconds, run.stdout[-300:])
     assert (run.returncode == 0) == (kind != "circles"), run.stdout[-500:]
+
+
+@pytest.mark.parametrize("extra, path, words", [
+    ({"junk": [[0, 1]] * 2_000_000}, "junk", "no list or object in a scene may have more than 1,000,000"),
+    ({"junk": [[[0]] * 100] * 20_000}, "junk", "more than 1,500,000 values"),
+    ({"junk": {f"k{i}": 0 for i in range(1_100_000)}}, "junk", "1,100,000 keys"),
+])
+def test_huge_values_outside_the_counted_lists_are_refused_without_walking_them(extra, path, words):
+    data = {**scene([{"shape": {"circle": 1}, "position": [0, 0]}]), **extra}
+    t = time.perf_counter()
+    problems = refused(data)
+    assert time.perf_counter() - t < 5.0
+    assert any(p.startswith(path) and words in r for p, r in problems.items()), problems
+
+
+def test_a_world_too_big_for_a_scene_file_is_refused_when_saved(tmp_path):
+    w = physics.World()
+    w.add_body(physics.Chain([(float(-i), 0.0) for i in range(100_000)]), kind="static")
+    w.add_body(physics.Chain([(float(-i), 5.0) for i in range(100_000)]), kind="static")
+    w.add_body(physics.Chain([(float(-i), 9.0) for i in range(100_000)]), kind="static")
+    with pytest.raises(ValueError, match=r"bodies\[2\].shape.chain: the scene asks for more work"):
+        w.save_scene(tmp_path / "big.json")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("kind", ["one long chain", "a million bodies", "one huge unknown list"])
+def test_a_file_at_the_size_limit_validates_in_seconds(tmp_path, kind):
+    """Just under 50 MB of the densest JSON: parsed (json's C number parsing unless a literal
+    could overflow), then refused by the counts before any value is walked."""
+    head = '{"format": "stelkropp.scene", "version": 2, '
+    if kind == "one long chain":
+        body = '{"kind": "static", "position": [0, 0], "shape": {"chain": {"points": [' + \
+               ",".join(["[0.25,1.5]"] * 4_600_000) + "]}}}"
+        text = head + '"bodies": [' + body + "]}"
+    elif kind == "a million bodies":
+        text = head + '"bodies": [' + ",".join(['{"shape":{"circle":1},"position":[0,0]}'] * 1_000_000) + "]}"
+    else:
+        text = head + '"bodies": [], "junk": [' + ",".join(["0"] * 20_000_000) + "]}"
+    assert len(text) < 50 * 2 ** 20
+    p = tmp_path / "limit.json"
+    p.write_text(text)
+    seconds, run = _validate_seconds(p)
+    assert seconds < 10.0 and run.returncode == 1, (seconds, run.stdout[-300:])

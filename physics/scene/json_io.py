@@ -12,6 +12,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 
 from .file_kind import open_regular
 
@@ -74,12 +75,18 @@ def _object(pairs):
     return out
 
 
+_LONG_NUMBER = re.compile(r"[eE][+-]?\d{3}|\d{300}")
+
+
 def parse(text: str):
     """json.loads, strictly: NaN, Infinity and numbers beyond float range become NonFinite,
     objects with a repeated key Duplicates; ValueError for invalid or too deeply nested JSON."""
+    # json's own number parsing runs in C; a Python hook per number was most of the time of a 50 MB
+    # file.  Only a literal with a 3-digit exponent or 300 digits in a row can leave the float range
+    # (1e299 and 299-digit integers are finite), so the hooks are needed only when one is present
+    hooks = {"parse_float": _float, "parse_int": _int} if _LONG_NUMBER.search(text) else {}
     try:
-        return json.loads(text, parse_constant=NonFinite, parse_float=_float, parse_int=_int,
-                          object_pairs_hook=_object)
+        return json.loads(text, parse_constant=NonFinite, object_pairs_hook=_object, **hooks)
     except RecursionError:  # json's C scanner recurses once per level (about 1000 allowed)
         raise ValueError("nested too deeply for a scene file") from None
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from .. import metadata as meta_rules
 from .atomic import scene_path, write_atomic
+from .budget import work_problem
 from .checks import Rejected, schema_problems, value_problems
 from .dump import to_dict
 from .json_io import dumps
@@ -33,8 +34,10 @@ def scene_to_dict(world, meta: dict | None = None) -> dict:
 def _loadable(data) -> None:
     """ValueError listing what the loader would refuse in ``data`` (values and schema: what the
     world holds was checked when it was set, this is the net under it)."""
-    problems, _ = value_problems(data)
-    problems += schema_problems(data, Rejected(p for p, _ in problems))
+    too_much = work_problem(data)  # a world too big for any scene file is refused, not written
+    problems, stop = ([too_much], True) if too_much else value_problems(data)
+    if not stop:
+        problems += schema_problems(data, Rejected(p for p, _ in problems))
     if problems:
         listed = "; ".join(f"{p}: {r}" for p, r in finish(problems)[:10])
         raise ValueError(f"the scene could not be loaded again, so it is not saved: {listed}")

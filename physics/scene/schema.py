@@ -27,6 +27,10 @@ MAX_FILE_BYTES = 50 * 1024 * 1024
 MAX_BODIES = 1_000_000
 # the format nests 7 deep (bodies[i].shapes[j].polygon[k][l]); deeper data is refused before the schema
 MAX_DEPTH = 32
+# no legal scene comes near these (the work limit, budget.py, allows about a million values):
+# refused while the values are walked, so a 50 MB file of one list is not walked to its end
+MAX_VALUES = 1_500_000
+MAX_ITEMS = 1_000_000
 # a SceneError lists at most this many problems (a hostile file can have millions)
 MAX_PROBLEMS = 100
 
