@@ -22,13 +22,12 @@ def scene_metadata(world) -> dict:
 
 def scene_to_dict(world, meta: dict | None = None) -> dict:
     """Scene data for ``world`` (``meta``: name/description/camera, default ``world.metadata``);
-    ValueError naming the field if the data could not be loaded again (nothing is written)."""
+    ValueError naming a metadata field a file could not hold.  (The sandbox takes one per edit
+    for undo, so the loader's checks run only when a file is written: ``save_scene``.)"""
     meta = scene_metadata(world) if meta is None else meta
     for key, value in meta.items():  # nested values may have been edited in place since they were set
         meta_rules.check(key, value)
-    data = to_dict(world, meta)
-    _loadable(data)
-    return data
+    return to_dict(world, meta)
 
 
 def _loadable(data) -> None:
@@ -56,4 +55,6 @@ def save_scene(world, path, name: str | None = None, description: str | None = N
         if value is not None:
             meta_rules.check(key, value, field="save_scene")
             meta[key] = value
-    write_atomic(target, dumps(scene_to_dict(world, meta)))
+    data = scene_to_dict(world, meta)
+    _loadable(data)
+    write_atomic(target, dumps(data))
