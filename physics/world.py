@@ -384,7 +384,8 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         return measures.angular_momentum(self, finite_vec(about, "about"))
 
     def save_scene(self, path, name: str | None = None, description: str | None = None) -> None:
-        """Write this world as a scene file (atomically: temp file + rename)."""
+        """Write this world as a scene file (atomically: temp file + rename); errors as
+        ``physics.save_scene`` (OSError, ValueError naming a field, TypeError for the path)."""
         from .scene.save import save_scene  # lazy, and save imports nothing that imports world
         save_scene(self, path, name=name, description=description)
 
