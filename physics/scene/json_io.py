@@ -82,8 +82,10 @@ def parse(text: str):
     """json.loads, strictly: NaN, Infinity and numbers beyond float range become NonFinite,
     objects with a repeated key Duplicates; ValueError for invalid or too deeply nested JSON."""
     # json's own number parsing runs in C; a Python hook per number was most of the time of a 50 MB
-    # file.  Only a literal with a 3-digit exponent or 300 digits in a row can leave the float range
-    # (1e299 and 299-digit integers are finite), so the hooks are needed only when one is present
+    # file.  Integers of fewer than 300 digits are finite floats, and a float leaves the range only
+    # with a 3-digit exponent or hundreds of digits, so the hooks (which keep the literal for the
+    # message) run only when such a literal is present.  The rare rest (299 digits, then e99)
+    # parses to inf, which value_problems refuses all the same, naming its path.
     hooks = {"parse_float": _float, "parse_int": _int} if _LONG_NUMBER.search(text) else {}
     try:
         return json.loads(text, parse_constant=NonFinite, object_pairs_hook=_object, **hooks)
