@@ -82,7 +82,7 @@ class Autosaver:
     def save(self, doc) -> bool:
         try:
             self.dir.mkdir(parents=True, exist_ok=True)
-            doc.world.save_scene(str(self.file), name=(doc.path.stem if doc.path else "untitled") + " (autosave)")
+            doc.world.save_scene(str(self.file), name=_title(doc.path) + " (autosave)")
             self.last_version = doc.history.version
             self.error = None
             return True
@@ -107,3 +107,11 @@ class Autosaver:
             self.marker.unlink()
         except OSError:
             pass
+
+
+def _title(path) -> str:
+    """The scene's title from its file name: a name that is not UTF-8 reaches Python with lone
+    surrogates (surrogateescape), which a scene file cannot hold, so those bytes become U+FFFD."""
+    if path is None:
+        return "untitled"
+    return path.stem.encode("utf-8", "surrogateescape").decode("utf-8", "replace")

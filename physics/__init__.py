@@ -33,7 +33,9 @@ def load_scene(path):
 
 def save_scene(world, path, name=None, description=None) -> None:
     """Write ``world`` as a scene file (JSON), atomically; ``name``/``description`` override the
-    world's metadata in the file.  Raises OSError if it cannot be written (the old file is kept)."""
+    world's metadata in the file.  Raises OSError if it cannot be written or ``path`` is a folder,
+    FIFO or device, ValueError naming the field if the scene could not be loaded again, TypeError
+    for a path that is no str, bytes or os.PathLike; the old file is then kept."""
     from .scene.save import save_scene as _save
     _save(world, path, name=name, description=description)
 

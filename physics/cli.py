@@ -154,9 +154,16 @@ def simulate(args) -> int:
 
 def _out_problem(path: str) -> str | None:
     """Why ``--out path`` could not be written, checked before the run (None if it looks writable)."""
+    from .scene.file_kind import kind_name
     target = os.path.realpath(path)
     if os.path.isdir(target):
         return "is a folder; give a file name"
+    try:
+        kind = kind_name(os.stat(target).st_mode)
+    except OSError:
+        kind = None
+    if kind:
+        return f"is {kind}, not a regular file; writing the result would replace it"
     folder = os.path.dirname(target)
     if not os.path.isdir(folder):
         return f"the folder {folder} does not exist"

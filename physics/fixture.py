@@ -8,7 +8,7 @@ recomputes the body's mass, centre of mass and inertia.
 from __future__ import annotations
 
 from .store.fixtures import ALL_BITS
-from .validate import checked_density, finite_num, friction_pair, shown
+from .validate import checked_density, finite_num, friction_pair, shown, text
 
 _GROUP_LIMIT = 2 ** 31  # the group is stored as a 32-bit signed integer
 
@@ -46,10 +46,11 @@ def filter_group(value, field: str = "group") -> int:
 
 
 def fixture_name(value, field: str = "name"):
-    """None or a string, or ValueError naming ``field`` (fixture names need not be unique)."""
+    """None or a non-empty string of valid Unicode (scene files hold it), or ValueError naming
+    ``field`` (fixture names need not be unique)."""
     if value is not None and not isinstance(value, str):
         raise ValueError(f"{field}: expected a string or None, got {shown(value)}")
-    return value
+    return value if value is None else text(value, field)
 
 
 class Fixture:

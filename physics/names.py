@@ -1,7 +1,7 @@
 """Unique names of a world's items (bodies, springs, ...): name <-> stable id, validated."""
 from __future__ import annotations
 
-from .validate import shown
+from .validate import shown, text
 
 
 class Names:
@@ -13,9 +13,11 @@ class Names:
         self.names: dict[int, str] = {}
 
     def check_new(self, name) -> None:
-        """ValueError naming ``name`` unless it is a non-empty string no item has yet."""
+        """ValueError naming ``name`` unless it is a non-empty string (valid Unicode: it is saved
+        in scene files) that no item has yet."""
         if not isinstance(name, str) or not name:
             raise ValueError(f"name: a {self.what} name must be a non-empty string, got {shown(name)}")
+        text(name, "name")
         if name in self.ids:
             raise ValueError(f"name: a {self.what} named {shown(name)} already exists")
 

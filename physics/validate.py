@@ -25,6 +25,23 @@ def shown(value) -> str:
     return text if len(text) <= SHOWN_CHARS else text[: SHOWN_CHARS - 3] + "..."
 
 
+def text(value, field: str, empty: bool = False) -> str:
+    """A string a scene file can hold, or ValueError naming ``field``: valid Unicode (JSON text is
+    UTF-8, so a lone surrogate such as "a\\ud800b" is saved but refused on load) and, unless
+    ``empty``, not empty."""
+    if not isinstance(value, str):
+        raise ValueError(f"{field}: expected a string, got {shown(value)}")
+    if not value and not empty:
+        raise ValueError(f"{field}: must not be empty")
+    if not value.isascii():
+        try:
+            value.encode("utf-8")
+        except UnicodeEncodeError as exc:
+            raise ValueError(f"{field}: not valid Unicode: holds a lone surrogate ({value[exc.start]!r} at "
+                             f"index {exc.start}); scene files could not hold it") from None
+    return value
+
+
 def is_number(value) -> bool:
     """A real number (Python or numpy int or float), not a bool, string or bytes."""
     return isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))

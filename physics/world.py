@@ -5,11 +5,14 @@ names and handles, and hands each step to the pipeline (physics/step/).
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from . import measures, options, solvers, views
 from .body import Body
 from .errors import SimulationError
+from .metadata import Metadata
 from .names import Names
 from .settings import ModeSettings, ModeValues
 from .spring import Spring
@@ -27,10 +30,13 @@ from .world_springs import SpringsMixin
 from .world_snapshot import SnapshotMixin
 from .world_events import EventsMixin
 
-__all__ = ["World", "Contact", "RenderData", "STATE_DTYPE", "DT_MIN"]
+__all__ = ["World", "Contact", "RenderData", "STATE_DTYPE", "DT_MIN", "DT_MAX"]
 
 #: the shortest step (s): below it 1/dt and the sub-step rates leave the float range
 DT_MIN = 1e-9
+#: the longest step (s): one hour.  Far beyond any stable rigid-body step, and world.time (dt
+#: summed) stays finite for any count of steps a run can make (World(dt=1e308) stepped it to inf)
+DT_MAX = 3600.0
 
 
 def _tolerance(field: str, doc: str = ""):
@@ -85,11 +91,11 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         self._n_sensors = 0  # sensor fixtures: the step splits sensor pairs off only when there are any
         self._gone_fixtures = {}  # removed fixtures the next step's end events still name
         self._pair_filter = None
+        self._in_callback = 0  # > 0 while a user callback (pair_filter) runs inside step()
         self._hit_event_threshold = 1.0  # world.hit_event_threshold (world_events.py)
         #: what the scene file this world came from says of itself (name, description, camera);
         #: saving writes it back.  Edit it to change what is saved.
-        self.metadata: dict = {}
-        """What the scene file says of itself (name, description, camera, ...); saving writes it back."""
+        self._metadata = Metadata()
         self._time = 0.0
         self.steps = 0
         """Number of step() calls completed."""
@@ -191,15 +197,28 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         self.wake_all()
 
     @property
+    def metadata(self) -> Metadata:
+        """What the scene file says of itself (name, description, camera, the sandbox's colours);
+        saving writes it back.  A dict whose scene keys are checked when set (physics/metadata.py):
+        ValueError names a value a scene file could not hold.  Assigning a dict checks it too."""
+        return self._metadata
+
+    @metadata.setter
+    def metadata(self, value):
+        if not isinstance(value, dict):
+            raise ValueError(f"metadata: expected a dict, got {type(value).__name__}")
+        self._metadata = Metadata(value)
+
+    @property
     def dt(self) -> float:
-        """Length of one step(), in seconds: finite and >= DT_MIN (1e-9 s; ValueError otherwise: below it
-        1/dt and the sub-step rates leave the float range). A sudden change keeps the warm start when it
+        """Length of one step(), in seconds: finite, >= DT_MIN (1e-9 s: below it 1/dt and the sub-step
+        rates leave the float range) and <= DT_MAX (3600 s); ValueError naming dt otherwise. A sudden change keeps the warm start when it
         is small (impulses rescaled) and drops it when the step grows more than 4x."""
         return self._dt
 
     @dt.setter
     def dt(self, value):
-        self._dt = finite_num(value, "dt", lo=DT_MIN)
+        self._dt = finite_num(value, "dt", lo=DT_MIN, hi=DT_MAX)
 
     @property
     def solver(self) -> str:
@@ -208,6 +227,8 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
 
     @solver.setter
     def solver(self, name):
+        if hasattr(self, "_in_callback"):
+            self._check_editable("solver")
         mode = solvers.get(name)  # ValueError for an unknown name, ImportError for a broken module
         switched = getattr(self, "_solver_name", name) != name
         self._solver_name = name
@@ -294,8 +315,18 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         Raises :class:`SimulationError` (and leaves the world as it was before the
         step) if the step would produce a non-finite value.
         """
-        h = self._dt if dt is None else finite_num(dt, "dt", lo=DT_MIN)
+        self._check_editable("step")
+        h = self._dt if dt is None else finite_num(dt, "dt", lo=DT_MIN, hi=DT_MAX)
+        if not math.isfinite(self._time + h):
+            raise ValueError(f"dt: a step of {h!r} s would take world.time ({self._time!r} s) beyond the float range")
         self._pipeline.step(self, h)
+
+    def _check_editable(self, what: str) -> None:
+        """RuntimeError while a callback runs inside step(): the step holds rows, slots and pairs
+        that an added or removed body, fixture, spring or joint would invalidate."""
+        if self._in_callback:
+            raise RuntimeError(f"{what}: the world cannot be changed from inside a callback (pair_filter "
+                               "runs during step()); note the change and make it after step() returns")
 
     def info(self) -> dict:
         """Counts, solver and the pipeline stages this world runs."""
@@ -353,7 +384,8 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         return measures.angular_momentum(self, finite_vec(about, "about"))
 
     def save_scene(self, path, name: str | None = None, description: str | None = None) -> None:
-        """Write this world as a scene file (atomically: temp file + rename)."""
+        """Write this world as a scene file (atomically: temp file + rename); errors as
+        ``physics.save_scene`` (OSError, ValueError naming a field, TypeError for the path)."""
         from .scene.save import save_scene  # lazy, and save imports nothing that imports world
         save_scene(self, path, name=name, description=description)
 

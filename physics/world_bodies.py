@@ -23,6 +23,7 @@ class BodiesMixin:
         mass, centre of mass and inertia are the sums over the fixtures (parallel axes).
         Every argument is validated and a ValueError names the bad field (a dynamic body of
         segments only has no area: refused)."""
+        self._check_editable("add_body")
         shapes = shape_list(shape)
         if not isinstance(kind, str) or kind not in KINDS:
             raise ValueError(f"kind: must be one of {list(KINDS)}, got {shown(kind)}")
@@ -44,7 +45,7 @@ class BodiesMixin:
         B.island[s] = -1
         B.awake[s] = 1
         h = Body(self, oid)
-        h._fixtures = [self._new_fixture(h, sh, dens, rest, mu_s, mu_d) for sh in shapes]
+        h._fixtures = self._new_fixtures(h, shapes, dens, rest, mu_s, mu_d)
         self._place_body(h, pos)
         if B.kind[s] != STATIC:
             B.v[s] = vel
@@ -57,6 +58,7 @@ class BodiesMixin:
     def _replace_shape(self, body: Body, shape) -> None:
         """Body.set_shape: one fixture of new geometry (the first fixture's id, material and
         filter) and the mass about the same origin (validated first)."""
+        self._check_editable("set_shape")
         shapes = shape_list(shape)
         if len(shapes) != 1:
             raise ValueError("shape: set_shape takes one shape (add_fixture adds more)")
@@ -79,6 +81,7 @@ class BodiesMixin:
 
     def remove(self, item) -> None:
         """Remove a body (its fixtures and the springs attached to it) or a spring."""
+        self._check_editable("remove")
         if isinstance(item, Spring):
             self._remove_spring(item)
             return
@@ -149,6 +152,20 @@ class BodiesMixin:
         # the contacts of s found by the arrays, not a Python pass over every contact
         for k in np.flatnonzero((a == s) | (b == s)):
             self._touched(int(b[k]) if a[k] == s else int(a[k]))
+
+    def _put_to_sleep(self, bodies) -> None:
+        """Put ``bodies`` to sleep as one island, at rest (the loader: a saved sleeping island).  The
+        label is a fresh one from the island counter, as the sleep update would give."""
+        label = self._pipeline._islands.label
+        label[0] += 1
+        B = self._bodies.view
+        for body in bodies:
+            s = body._s
+            B.awake[s] = 0
+            B.island[s] = label[0]
+            B.v[s] = 0.0
+            B.w[s] = 0.0
+        self._pipeline.invalidate()
 
     def wake_all(self) -> None:
         """Wake every body (and forget the sleeping islands)."""

@@ -72,7 +72,11 @@ class EventsMixin:
         first pairs two fixtures that the category/mask/group filter and the joints let collide
         (fixture_a the lower id; for a sensor pair the sensor first).  False drops the pair: no
         contact, no events, no sensor overlap, until their boxes part and meet again (then it is
-        asked again).  Setting it forgets every verdict.  ValueError for a non-callable."""
+        asked again).  Setting it forgets every verdict.  ValueError for a non-callable.
+
+        It runs inside step(): it may read the world but not change it (adding or removing
+        bodies, fixtures, springs or joints, restore, step, the solver raise RuntimeError), and
+        anything it raises refuses the step: SimulationError, world reverted, world.fault set."""
         return self._pair_filter
 
     @pair_filter.setter

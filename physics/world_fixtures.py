@@ -60,6 +60,18 @@ def _extent(shape, com) -> float:
     return float(np.max(np.hypot(d[:, 0], d[:, 1]))) + shape.radius
 
 
+def _extents(fx, com) -> float:
+    """The largest ``_extent`` of the fixtures ``fx``, vertices taken together (one numpy pass; the
+    same number, as adding a shape's radius after the max is the max of the sums)."""
+    circles = [_extent(f.shape, com) for f in fx if isinstance(f.shape, Circle)]
+    polys = [f.shape for f in fx if not isinstance(f.shape, Circle)]
+    if polys:
+        d = np.concatenate([p.vertices for p in polys]) - com
+        r = np.repeat([p.radius for p in polys], [len(p.vertices) for p in polys])
+        circles.append(float(np.max(np.hypot(d[:, 0], d[:, 1]) + r)))
+    return max(circles)
+
+
 class FixturesMixin:
     """The fixture half of :class:`~physics.World` (see world.py for the state it uses)."""
 
@@ -92,6 +104,21 @@ class FixturesMixin:
         h = Fixture(self, fid, shape, body, name)
         self._fixture_handles[fid] = h
         return h
+
+    def _new_fixtures(self, body, shapes, density, e, mu_s, mu_d) -> list:
+        """Fixture rows of one material for ``shapes`` at once (what ``_new_fixture`` makes for
+        each, with the default filter and no name: add_body's 100,000 chain segments)."""
+        ids, rows = self._store.fixtures.add_many(len(shapes))
+        F = self._store.fixtures.view
+        r = slice(rows.start, rows.stop)
+        F.body[r] = body._s
+        F.shape[r] = [shape_code(sh) for sh in shapes]
+        F.radius[r] = [sh.radius for sh in shapes]
+        F.density[r], F.e[r], F.mu_s[r], F.mu_d[r] = density, e, mu_s, mu_d
+        F.category[r], F.mask[r] = DEFAULT_CATEGORY, ALL_BITS
+        out = [Fixture(self, fid, sh, body) for fid, sh in zip(ids, shapes)]
+        self._fixture_handles.update(zip(ids, out))
+        return out
 
     def _drop_fixture_row(self, fx: Fixture) -> None:
         F = self._store.fixtures.view
@@ -128,6 +155,7 @@ class FixturesMixin:
         Inside :meth:`_placing_once` this is deferred to its end (the origin is unchanged until
         then: position and centre of mass are still each other's).
         """
+        self._check_editable("the body's fixtures")
         pending = getattr(self, "_pending_place", None)
         if pending is not None:
             prev = pending.get(id(body))
@@ -152,23 +180,9 @@ class FixturesMixin:
         B.inv_m[s] = 1.0 / m if dyn and m > 0 else 0.0
         B.inv_i[s] = 1.0 / inertia if dyn and inertia > 0 else 0.0
         B.com[s] = com
-        for f, k in zip(fx, slots):
-            shape = f.shape
-            count = 0 if isinstance(shape, Circle) else len(shape.vertices)
-            if F.vcount[k] and F.vcount[k] != count:
-                self._verts.release(int(F.vcount[k]))
-                F.vcount[k] = 0
-            if isinstance(shape, Circle):
-                F.center[k] = shape.offset - com
-            elif F.vcount[k]:  # same count: in place (the pool's layout does not depend on edits)
-                self._verts.set(int(F.vstart[k]), shape.vertices - com)
-            else:
-                F.vstart[k] = self._verts.add(shape.vertices - com)
-                F.vcount[k] = count
-            if isinstance(shape, ChainSegment):
-                F.ghost[k] = shape.ghost - com
+        self._place_geometry(fx, slots, com)
         # one shape: its own bounding radius (the number the recorded end states were made with)
-        B.bound_r[s] = fx[0].shape.bounding_radius if len(fx) == 1 else max(_extent(f.shape, com) for f in fx)
+        B.bound_r[s] = fx[0].shape.bounding_radius if len(fx) == 1 else _extents(fx, com)
         if move or not np.array_equal(old_com, com):  # an unmoved centre keeps x to the bit
             q = B.q[s]
             c, sn = math.cos(q), math.sin(q)
@@ -179,6 +193,36 @@ class FixturesMixin:
             for h in self._handles.values():
                 self._mirror(h)
         self._mirror(body)
+
+    def _place_geometry(self, fx, slots, com) -> None:
+        """Fixture rows' geometry relative to the centre of mass ``com``: vertices (in place when the
+        count is unchanged, new ones appended in one pass), circle centres and chain ghosts."""
+        F = self._store.fixtures.view
+        fresh, fresh_rows = [], []
+        for f, k in zip(fx, slots):
+            shape = f.shape
+            if isinstance(shape, Circle):
+                if F.vcount[k]:
+                    self._verts.release(int(F.vcount[k]))
+                    F.vcount[k] = 0
+                F.center[k] = shape.offset - com
+                continue
+            count = len(shape.vertices)
+            if F.vcount[k] and F.vcount[k] != count:
+                self._verts.release(int(F.vcount[k]))
+                F.vcount[k] = 0
+            if F.vcount[k]:  # same count: in place (the pool's layout does not depend on edits)
+                self._verts.set(int(F.vstart[k]), shape.vertices - com)
+            else:
+                fresh.append(shape.vertices - com)
+                fresh_rows.append(k)
+        if fresh:
+            rows = np.array(fresh_rows)
+            F.vstart[rows] = self._verts.add_many(fresh)
+            F.vcount[rows] = [len(v) for v in fresh]
+        ghosts = [(k, f.shape.ghost) for f, k in zip(fx, slots) if isinstance(f.shape, ChainSegment)]
+        if ghosts:
+            F.ghost[np.array([k for k, _ in ghosts])] = np.array([g for _, g in ghosts]) - com
 
     def _mirror(self, body) -> None:
         """Copy the first fixture into the body's first-fixture fields (store/bodies.py)."""
@@ -198,6 +242,7 @@ class FixturesMixin:
     def _add_fixture(self, body, shape, density=None, friction=None, restitution=None, category=DEFAULT_CATEGORY,
                      mask=ALL_BITS, group=0, name=None, sensor=False) -> Fixture:
         """Body.add_fixture: validated; material defaults to the body's first fixture's."""
+        self._check_editable("add_fixture")
         shapes = shape_list(shape)
         if len(shapes) != 1:
             raise ValueError("shape: add_fixture takes one shape (a chain: add it to the body with add_body)")
@@ -217,6 +262,7 @@ class FixturesMixin:
 
     def _remove_fixture(self, body, fx) -> None:
         """Body.remove_fixture: ValueError for a fixture of another body or the body's last one."""
+        self._check_editable("remove_fixture")
         if not isinstance(fx, Fixture) or fx.body is not body or not fx.alive:
             raise ValueError(f"remove_fixture: {fx!r} is not a live fixture of this body")
         rest = [f for f in body._fixtures if f is not fx]
@@ -232,6 +278,7 @@ class FixturesMixin:
 
     def _set_sensor(self, fx, value) -> None:
         """Fixture.sensor's setter: the body's mass follows; its contacts end or begin next step."""
+        self._check_editable("sensor")
         on = flag(value, "sensor")
         F = self._store.fixtures.view
         f = fx._f

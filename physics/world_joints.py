@@ -16,7 +16,7 @@ import numpy as np
 from . import joint_params as jp
 from .body import Body
 from .joint import Joint
-from .store.joints import COLLIDE, JOINT_KINDS
+from .store.joints import BROKEN, COLLIDE, JOINT_KINDS
 from .validate import finite_num, finite_vec
 
 _POINT_KINDS = ("revolute", "prismatic", "weld", "wheel")
@@ -49,6 +49,7 @@ class JointsMixin:
         (physics/joint_params.py), its geometry (anchor/axis in world coordinates, or
         local_anchor_a/local_anchor_b/local_axis/reference_angle), name, collide_connected,
         break_force, break_torque.  ValueError names a bad field; TypeError an unknown keyword."""
+        self._check_editable("add_joint")
         if not isinstance(kind, str) or kind not in JOINT_KINDS:
             raise ValueError(f"kind: must be one of {list(JOINT_KINDS)}, got {kind!r}")
         self._check_bodies(kind, body_a, body_b)
@@ -185,9 +186,19 @@ class JointsMixin:
             J.lb[s] = v
         self._joint_edited(joint)
 
+    def _break_joint(self, joint: Joint) -> None:
+        """Mark ``joint`` broken, as if it had broken in an earlier step (the loader: a saved broken
+        joint stays broken and is not reported by broken_joints() again)."""
+        s = joint._s
+        self._joints.view.flags[s] |= BROKEN
+        self._joints._reported.add(joint.id)
+        self._joints.version += 1
+        self._pipeline.invalidate()
+
     # -- removal and lookup ----------------------------------------------------------
     def remove(self, item) -> None:
         """Remove a joint, a spring, or a body (and the joints and springs attached to it)."""
+        self._check_editable("remove")
         if isinstance(item, Joint):
             self._remove_joint(item)
             return

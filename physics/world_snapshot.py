@@ -48,4 +48,5 @@ class SnapshotMixin:
         left as they are; the events of the step before the restore are cleared (the next
         step's are those the original run had).
         """
+        self._check_editable("restore")
         _snap.restore(self, snap)

@@ -18,6 +18,7 @@ class SpringsMixin:
         """A damped spring from ``anchor_a`` on ``body_a`` (body coordinates) to ``anchor_b`` on
         ``body_b``, or to the world point ``anchor_b`` when ``body_b`` is None.  The rest length
         defaults to the current distance between the anchors."""
+        self._check_editable("add_spring")
         for b, field in ((body_a, "body_a"), (body_b, "body_b")):
             if b is None and field == "body_b":
                 continue

@@ -46,3 +46,14 @@ def test_offered_after_a_crash_not_after_a_clean_exit(tmp_path):
     assert offer is not None and offer[0] == a.file and offer[2] == "scenes/default.json"
     a.end_session()
     assert Autosaver(directory=tmp_path).previous_crash() is None
+
+
+def test_a_file_name_that_is_not_utf8_still_autosaves(tmp_path):
+    """Such a name reaches Python with lone surrogates, which a scene file cannot hold: the
+    title takes U+FFFD for those bytes instead of the autosave failing."""
+    from pathlib import Path
+    a = Autosaver(interval=0.0, directory=tmp_path)
+    doc = document(small_world())
+    doc.path = Path("caf\udce9.json")  # os.fsdecode(b"caf\xe9.json")
+    assert a.save(doc), a.error
+    assert physics.load_scene(a.file).metadata["name"] == "caf\ufffd (autosave)"

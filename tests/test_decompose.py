@@ -8,6 +8,7 @@ comb-like ones: teeth of random depth on a bar), in both windings:
 - at most 2 r + 1 pieces for r reflex vertices (the Hertel-Mehlhorn bound, module docstring).
 """
 import math
+import time
 
 import numpy as np
 import pytest
@@ -120,3 +121,42 @@ def test_convex_input_is_one_piece_and_collinear_points_are_dropped():
 def test_bad_outlines_are_refused_by_name(outline, words):
     with pytest.raises(ValueError, match=words):
         physics.decompose(outline)
+
+
+def _star(n):
+    a = np.linspace(0, 2 * math.pi, n, endpoint=False)
+    r = np.where(np.arange(n) % 2 == 0, 1.0, 0.6)
+    return np.c_[r * np.cos(a), r * np.sin(a)]
+
+
+def _noisy(n, seed=1):
+    rng = np.random.default_rng(seed)
+    a = np.sort(rng.uniform(0, 2 * math.pi, n))
+    r = rng.uniform(0.5, 1.0, n)
+    return np.c_[r * np.cos(a), r * np.sin(a)]
+
+
+@pytest.mark.timeout(120)
+@pytest.mark.parametrize("make", [_star, _noisy])
+def test_ten_thousand_vertices_take_seconds_not_minutes(make):
+    """Each stage is O(n log n) or close (module docstring): a 10,000-vertex outline took six
+    minutes when the merge restarted after every diagonal and the simplicity test tried every pair."""
+    outline = make(10_000)
+    t = time.perf_counter()
+    pieces = physics.decompose(outline)
+    assert time.perf_counter() - t < 8.0
+    assert sum(p.area for p in pieces) == pytest.approx(abs(area(outline)), rel=1e-9)
+    assert len(pieces) <= 2 * reflex_count(outline) + 1
+
+
+def test_cost_grows_near_linearly():
+    """Doubling the outline must not quadruple the time (min of 3 runs, generous slack for load)."""
+    def best(n):
+        outline = _star(n)
+        times = []
+        for _ in range(3):
+            t = time.perf_counter()
+            physics.decompose(outline)
+            times.append(time.perf_counter() - t)
+        return min(times)
+    assert best(4000) < 3.2 * best(2000)

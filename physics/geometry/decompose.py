@@ -4,34 +4,32 @@ Two stages:
 
 1. Ear-clipping triangulation by mapbox-earcut (a maintained C++ library; Held 2001's
    z-order hashed ear test).
-2. Hertel-Mehlhorn merging (Hertel and Mehlhorn 1983): remove every diagonal whose removal
-   leaves a convex piece, until none is left.  Each remaining diagonal is essential at one
-   of its ends, a reflex vertex, and a reflex vertex keeps at most two essential diagonals
-   (three would make its interior angle 360 degrees or more), so there are at most 2r + 1
-   pieces for r reflex vertices, at most four times the optimum.
+2. Hertel-Mehlhorn merging (Hertel and Mehlhorn 1983; ``hertel_mehlhorn``): remove every
+   diagonal whose removal leaves a convex piece.  Each remaining diagonal is essential at
+   one of its ends, a reflex vertex, and a reflex vertex keeps at most two essential
+   diagonals (three would make its interior angle 360 degrees or more), so there are at
+   most 2r + 1 pieces for r reflex vertices, at most four times the optimum.
 
 Collinear outline vertices are dropped first (a piece cannot have them); repeated
-vertices, self-intersections and outlines without area are refused with a ValueError
-that names the problem.  Every piece carries the outline it came from (``piece.outline``),
+vertices, self-intersections (a Shamos-Hoey sweep, ``simplicity``) and outlines without
+area are refused with a ValueError that names the problem.  Every stage is O(n log n) or
+close to it (earcut's z-order hashing makes its ear tests near-constant in practice).  Every piece carries the outline it came from (``piece.outline``),
 so a scene file can store what the user drew.
 """
 from __future__ import annotations
 
+from collections import deque
+
 import mapbox_earcut
 import numpy as np
 
+from .hertel_mehlhorn import merge, turn
 from .shapes import MAX_POLYGON_VERTICES, Polygon, _as_points, _signed_area
+from .simplicity import first_meeting
 
 # a turn whose sine is below this counts as straight (the 4x margin over Polygon's own
 # collinearity test keeps every merged piece acceptable to Polygon)
 _STRAIGHT_SINE = 4e-9
-
-
-def _turn(p, a, b, c) -> float:
-    """Sine of the turn at b along a -> b -> c (> 0: left, convex for a CCW outline)."""
-    e0 = p[b] - p[a]
-    e1 = p[c] - p[b]
-    return float((e0[0] * e1[1] - e0[1] * e1[0]) / (np.hypot(*e0) * np.hypot(*e1)))
 
 
 def _clean(outline) -> np.ndarray:
@@ -44,87 +42,42 @@ def _clean(outline) -> np.ndarray:
     if scale == 0.0 or np.any(step <= 1e-12 * scale):
         i = int(np.argmin(step))
         raise ValueError(f"outline has repeated vertices at index {i} and {(i + 1) % len(p)}")
-    keep = list(range(len(p)))
-    changed = True
-    while changed and len(keep) >= 3:
-        changed = False
-        for k in range(len(keep)):
-            a, b, c = keep[k - 1], keep[k], keep[(k + 1) % len(keep)]
-            if abs(_turn(p, a, b, c)) <= _STRAIGHT_SINE:
-                del keep[k]
-                changed = True
-                break
-    q = p[keep]
+    q = p[_turning(p.tolist())]
     if len(q) >= 3:
-        _check_simple(q)
+        found = first_meeting(q.tolist())
+        if found:
+            i, k = found
+            m = len(q)
+            raise ValueError(f"outline is self-intersecting: edge {i} ({i}-{(i + 1) % m}) meets edge {k} "
+                             f"({k}-{(k + 1) % m})")
     if len(q) < 3 or abs(_signed_area(q - q.mean(axis=0))) <= 1e-12 * scale * scale:
         raise ValueError("outline has zero area (its vertices lie on one line)")
     return q if _signed_area(q - q.mean(axis=0)) > 0 else q[::-1].copy()
 
 
-def _check_simple(p: np.ndarray) -> None:
-    """ValueError naming two edges that cross or touch (non-neighbours), else nothing."""
-    n = len(p)
-    a, b = p, np.roll(p, -1, axis=0)
-    for i in range(n):
-        j = np.arange(i + 2, n)
-        if i == 0:
-            j = j[j != n - 1]   # the last edge is the first one's neighbour
-        if not len(j):
-            continue
-        c, d = a[j], b[j]
+def _turning(p: list) -> list[int]:
+    """Indices of the vertices that turn: straight (and reversing) ones dropped, repeatedly, as
+    dropping one changes its neighbours' turns.  A stack pass (as in Andrew's monotone chain),
+    then the wrap-around at the start: linear time."""
+    def straight(a, b, c):
+        return abs(turn(p, a, b, c)) <= _STRAIGHT_SINE
 
-        def orient(u, v, w):
-            return (v[..., 0] - u[..., 0]) * (w[..., 1] - u[..., 1]) - (v[..., 1] - u[..., 1]) * (w[..., 0] - u[..., 0])
-        d1, d2 = orient(a[i], b[i], c), orient(a[i], b[i], d)
-        d3, d4 = orient(c, d, a[i]), orient(c, d, b[i])
-        hit = (np.sign(d1) != np.sign(d2)) & (np.sign(d3) != np.sign(d4))
-        line = (d1 == 0) & (d2 == 0)  # on one line: they meet when their spans along it overlap
-        if np.any(line):
-            e = b[i] - a[i]
-            t0, t1 = (c - a[i]) @ e, (d - a[i]) @ e
-            hit &= ~line
-            hit |= line & (np.maximum(t0, t1) >= 0) & (np.minimum(t0, t1) <= e @ e)
-        if np.any(hit):
-            k = int(j[np.argmax(hit)])
-            raise ValueError(f"outline is self-intersecting: edge {i} ({i}-{(i + 1) % n}) meets edge {k} "
-                             f"({k}-{(k + 1) % n})")
-
-
-def _merge(p: np.ndarray, pieces: list[list[int]]) -> list[list[int]]:
-    """Hertel-Mehlhorn: merge pieces across diagonals while the result stays convex."""
-    merged = True
-    while merged:
-        merged = False
-        edges = {}
-        for k, piece in enumerate(pieces):
-            for t in range(len(piece)):
-                edges[(piece[t], piece[(t + 1) % len(piece)])] = k
-        for (u, v), k in edges.items():
-            m = edges.get((v, u))
-            if m is None or m <= k:
-                continue
-            joined = _join(pieces[k], pieces[m], u, v)
-            if len(joined) <= MAX_POLYGON_VERTICES and _convex(p, joined):
-                pieces[k] = joined
-                del pieces[m]
-                merged = True
-                break
-    return pieces
-
-
-def _join(a: list[int], b: list[int], u: int, v: int) -> list[int]:
-    """Piece a (with edge u -> v) and piece b (with edge v -> u) as one CCW cycle."""
-    ia = a.index(v)
-    ra = a[ia:] + a[:ia]          # starts at v, ends at u
-    ib = b.index(u)
-    rb = b[ib:] + b[:ib]          # starts at u, ends at v
-    return ra[:-1] + rb[:-1]
-
-
-def _convex(p, cyc: list[int]) -> bool:
-    n = len(cyc)
-    return all(_turn(p, cyc[k - 1], cyc[k], cyc[(k + 1) % n]) > _STRAIGHT_SINE for k in range(n))
+    keep = []
+    for i in range(len(p)):
+        while len(keep) >= 2 and straight(keep[-2], keep[-1], i):
+            keep.pop()
+        keep.append(i)
+    keep = deque(keep)
+    changed = True
+    while changed and len(keep) >= 3:
+        changed = False
+        while len(keep) >= 3 and straight(keep[-2], keep[-1], keep[0]):
+            keep.pop()
+            changed = True
+        while len(keep) >= 3 and straight(keep[-1], keep[0], keep[1]):
+            keep.popleft()
+            changed = True
+    return list(keep)
 
 
 def decompose(outline) -> list[Polygon]:
@@ -144,12 +97,13 @@ def decompose(outline) -> list[Polygon]:
     tri = mapbox_earcut.triangulate_float64(p, np.array([len(p)], dtype=np.uint32)).reshape(-1, 3)
     if len(tri) != len(p) - 2:
         raise ValueError("outline could not be triangulated (is it self-intersecting or degenerate?)")
-    pieces = []
+    pts = p.tolist()
+    triangles = []
     for t in tri.tolist():
-        if _turn(p, t[0], t[1], t[2]) < 0:  # earcut's winding is not promised: make each CCW
+        if turn(pts, t[0], t[1], t[2]) < 0:  # earcut's winding is not promised: make each CCW
             t = [t[0], t[2], t[1]]
-        pieces.append(t)
-    pieces = _merge(p, pieces)
+        triangles.append(t)
+    pieces = merge(pts, triangles, MAX_POLYGON_VERTICES, _STRAIGHT_SINE)
     source = p.copy()
     source.setflags(write=False)
     out = []

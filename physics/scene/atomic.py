@@ -13,6 +13,8 @@ from __future__ import annotations
 import os
 import secrets
 
+from .file_kind import check_writable_target
+
 _SUFFIX = ".tmp"
 # temporary files this process is writing right now (another thread may be saving the same name)
 _IN_FLIGHT: set = set()
@@ -21,9 +23,11 @@ _IN_FLIGHT: set = set()
 def write_atomic(path, text: str) -> None:
     """Write ``text`` (UTF-8) to ``path`` atomically, keeping the old file's permissions.
 
-    Raises OSError (the old file untouched, no temporary file left) if it cannot be written.
+    Raises OSError (the old file untouched, no temporary file left) if it cannot be written,
+    file_kind.NotRegularFile (an OSError) if ``path`` is a folder, FIFO, device or socket.
     """
-    target = os.path.realpath(os.fspath(path))  # through symlinks: replace the target, keep the link
+    target = os.path.realpath(scene_path(path))  # through symlinks: replace the target, keep the link
+    check_writable_target(target)  # a FIFO or device must not be replaced by the rename
     folder, name = os.path.split(target)
     prefix = _temp_prefix(folder, name)
     _remove_stale(folder, prefix)
@@ -49,6 +53,15 @@ def write_atomic(path, text: str) -> None:
     finally:
         _IN_FLIGHT.discard(tmp)
     _sync_folder(folder)
+
+
+def scene_path(path) -> str:
+    """``path`` (str, bytes or os.PathLike) as a str (bytes decoded as the file system does, so any
+    name round-trips); TypeError naming what was given for anything else (an int would be taken
+    for an open file descriptor)."""
+    if not isinstance(path, (str, bytes, os.PathLike)):
+        raise TypeError(f"path: expected a str, bytes or os.PathLike file name, got {type(path).__name__}")
+    return os.fsdecode(os.fspath(path))
 
 
 def _temp_prefix(folder: str, name: str) -> str:

@@ -1,12 +1,13 @@
 """Every problem in scene data, each as (JSON path, reason).
 
-Order of checks: format and version (if the data is not a version 1 or 2 scene,
-nothing else is worth reporting), the body limit, the values themselves
+Order of checks, cheap before expensive: format and version (if the data is not a version 1
+or 2 scene, nothing else is worth reporting), the body limit and the work the scene asks for
+(``budget``: list lengths only), the values themselves
 (nesting depth, numbers that are no finite float, repeated keys, text that
 is not valid Unicode), the JSON Schema, and last the hand checks for what a
-schema cannot express: shapes (convexity, degeneracy, size), masses the
-solver can represent, duplicate and dangling names, the solver and its
-declared settings.  Each later check skips any part an earlier one
+schema cannot express: duplicate and dangling names, the solver and its
+declared settings, and then shapes (convexity, degeneracy, size) and masses the
+solver can represent, built only for bodies with nothing else wrong.  Each later check skips any part an earlier one
 rejected, so one mistake is reported once.
 """
 from __future__ import annotations
@@ -15,24 +16,44 @@ import itertools
 import json
 import math
 
-from jsonschema import Draft202012Validator
+import numpy as np
+
+from jsonschema import Draft202012Validator, validators
 
 from .. import solvers
 from ..validate import checked_density
 from . import schema as fmt
+from .budget import work_problem
 from .joints import joint_problems
 from .shapes import fixture_fields, kind_of, make_shapes, shape_problem
 from .json_io import Duplicates, NonFinite
 from .problems import finish, preview, quoted, type_name
 
 _VALIDATOR = None
+_VEC2 = {"$ref": "#/$defs/vec2"}
+_NUMBER = (int, float)  # exact types: bool is no number here, as in JSON Schema
+
+
+def _items(validator, items, instance, schema):
+    """jsonschema's ``items``, with a shortcut for lists of points: a 100,000-point chain is
+    checked in one loop instead of 100,000 schema descents; any list the loop doubts is
+    descended as before, so the problems reported are the same."""
+    if items == _VEC2 and isinstance(instance, list) and all(
+            type(p) is list and len(p) == 2 and type(p[0]) in _NUMBER and type(p[1]) in _NUMBER
+            for p in instance):
+        return
+    yield from _ITEMS(validator, items, instance, schema)
+
+
+_ITEMS = Draft202012Validator.VALIDATORS["items"]
+_Validator = validators.extend(Draft202012Validator, {"items": _items})
 
 
 def validator() -> Draft202012Validator:
     global _VALIDATOR
     if _VALIDATOR is None:
         Draft202012Validator.check_schema(fmt.SCHEMA)
-        _VALIDATOR = Draft202012Validator(fmt.SCHEMA)
+        _VALIDATOR = _Validator(fmt.SCHEMA)
     return _VALIDATOR
 
 
@@ -73,15 +94,24 @@ def count_problem(data):
 
 def value_problems(data) -> tuple:
     """Values no scene may hold, wherever they are: nesting deeper than MAX_DEPTH, numbers that
-    are no finite float, keys given twice in one object, strings that are not valid Unicode.
-    Walked with an explicit stack, so hostile nesting cannot exhaust Python's recursion.
-    Returns (problems, too_deep)."""
-    out, stack, too_deep = [], [((), data)], False
+    are no finite float, keys given twice in one object, strings that are not valid Unicode,
+    and more values than any scene the work limit allows (MAX_VALUES; a list or object of more
+    than MAX_ITEMS).  Walked with an explicit stack, so hostile nesting cannot exhaust Python's
+    recursion.  Returns (problems, stop): stop when the data is too deep or too big for the
+    schema and hand checks."""
+    out, stack, stop, seen = [], [((), data)], False, 0
     while stack and len(out) <= fmt.MAX_PROBLEMS:
         path, v = stack.pop()
+        seen += 1
+        if seen > fmt.MAX_VALUES:
+            return out + [(path, f"the scene holds more than {fmt.MAX_VALUES:,} values (numbers, strings, "
+                                 "lists, objects); the largest scene the work limit allows holds about a million")], True
         if isinstance(v, (dict, list)) and len(path) >= fmt.MAX_DEPTH:
             out.append((path, f"nested more than {fmt.MAX_DEPTH} levels deep (a scene needs 7)"))
-            too_deep = True
+            stop = True
+        elif isinstance(v, (dict, list)) and len(v) > fmt.MAX_ITEMS:
+            return out + [(path, f"has {len(v):,} {'keys' if isinstance(v, dict) else 'items'}; no list or "
+                                 f"object in a scene may have more than {fmt.MAX_ITEMS:,}")], True
         elif isinstance(v, dict):
             if isinstance(v, Duplicates):
                 out += [(path + (k,), "duplicate key: this object gives it more than once") for k in v.repeated]
@@ -93,12 +123,34 @@ def value_problems(data) -> tuple:
                 else:
                     stack.append((path + (k,), item))
         elif isinstance(v, list):
-            stack += [(path + (i,), item) for i, item in enumerate(v)]
+            plain = _plain_numbers(v) if len(path) < fmt.MAX_DEPTH - 2 else None
+            if plain is not None:  # finite numbers or pairs of them: nothing to report inside
+                seen += plain
+            else:
+                stack += [(path + (i,), item) for i, item in enumerate(v)]
         else:
             reason = _value_reason(v)
             if reason:
                 out.append((path, reason))
-    return out, too_deep
+    return out, stop
+
+
+def _plain_numbers(v: list):
+    """How many values a list of finite numbers, or of [x, y] pairs of them, holds (a chain's
+    100,000 points: one numpy conversion, not 300,000 stack steps); None for any other list.
+    Only what this walk looks for is excluded (non-finite or float-overflowing numbers, text,
+    objects); types are the schema's business."""
+    if not v or isinstance(v[0], str):
+        return None
+    try:
+        a = np.asarray(v, dtype=np.float64)
+    except (TypeError, ValueError, OverflowError):
+        return None
+    if not (a.ndim == 1 or (a.ndim == 2 and a.shape[1] == 2)) or not np.isfinite(a).all():
+        return None
+    if any(isinstance(x, str) for x in (v if a.ndim == 1 else (y for p in v for y in p))):
+        return None  # numpy reads "1.5" as a number; a string must be walked (its text is checked)
+    return a.size + (len(v) if a.ndim == 2 else 0)
 
 
 def _value_reason(v):
@@ -188,8 +240,10 @@ def body_problems(bodies, bad: Rejected, version: int = fmt.VERSION):
         shapes.append(None)
         if not isinstance(b, dict):
             continue
+        if path in bad:  # something in this body is wrong already: build nothing of it
+            continue
         specs, where = _specs(b, path, version, out)
-        if not specs or (*path, "shapes") in bad.paths:
+        if not specs:
             continue
         built = [None if p in bad else _build_one(spec, p, version, out) for spec, p in zip(specs, where)]
         if any(x is None for x in built):
@@ -305,20 +359,23 @@ def solver_problems(world: dict, bad: Rejected) -> list:
 
 
 def hand_problems(data, bad: Rejected):
-    """(problems, shapes) for the checks a schema cannot express."""
+    """(problems, shapes) for the checks a schema cannot express: the cheap ones (names, links,
+    the solver) first, then the shapes of each body nothing was found wrong with (building one
+    can mean decomposing a 10,000-vertex outline: never for a body that is refused anyway)."""
     bodies = data.get("bodies") if isinstance(data.get("bodies"), list) else []
     springs = data.get("springs") if isinstance(data.get("springs"), list) else []
     joints = data.get("joints") if isinstance(data.get("joints"), list) else []
     world = data.get("world") if isinstance(data.get("world"), dict) else {}
     version = data.get("version", fmt.VERSION)
-    out, shapes = body_problems(bodies, bad, version if version in fmt.VERSIONS else fmt.VERSION)
-    out += name_problems(bodies, "body", "bodies", bad)
+    out = name_problems(bodies, "body", "bodies", bad)
     out += name_problems(springs, "spring", "springs", bad)
     out += spring_problems(bodies, springs, bad)
     out += name_problems(joints, "joint", "joints", bad)
     out += joint_problems(bodies, joints, bad)
     out += solver_problems(world, bad)
-    return out, shapes
+    more, shapes = body_problems(bodies, Rejected([*bad.paths, *(p for p, _ in out)]),
+                                 version if version in fmt.VERSIONS else fmt.VERSION)
+    return out + more, shapes
 
 
 def check(data):
@@ -327,12 +384,12 @@ def check(data):
     problems = header_problems(data)
     if problems:
         return finish(problems), []
-    too_many = count_problem(data)
-    if too_many:
+    too_many = count_problem(data) or work_problem(data)
+    if too_many:  # before any value is walked: the counts alone can ask for minutes of work
         return finish([too_many]), []
-    problems, too_deep = value_problems(data)
-    if too_deep:
-        return finish(problems), []  # the schema and hand checks recurse; never give them deep data
+    problems, stop = value_problems(data)
+    if stop:
+        return finish(problems), []  # the schema and hand checks recurse; never give them deep or huge data
     problems += schema_problems(data, Rejected(p for p, _ in problems))
     more, shapes = hand_problems(data, Rejected(p for p, _ in problems))
     return finish(problems + more), shapes

@@ -12,7 +12,7 @@ from __future__ import annotations
 import json
 import math
 
-from ..store import KIND_NAMES
+from ..store import DYNAMIC, KIND_NAMES
 from . import schema as fmt
 from .joints import joint_dict
 from .shapes import shape_objects
@@ -30,7 +30,27 @@ def _shortest(target: float, base: float, forward) -> float:
             if forward(q) == target:
                 return q
         p = math.nextafter(p, math.inf if forward(p) < target else -math.inf)
-    return base
+    return _bisect(target, base, forward)
+
+
+def _bisect(target: float, base: float, forward) -> float:
+    """The smallest float p near ``base`` with forward(p) == target, for a nondecreasing forward
+    (p + t): when p is far finer-grained than the result (a centre of mass of 3e-17 m), a few ulps
+    of p move nothing and the answer is many ulps away.  base is off by at most an ulp of the
+    larger operand, so a bracket of a few of those holds it."""
+    u = math.ulp(max(abs(target), abs(base), abs(target - base))) * 4
+    lo, hi = base - u, base + u
+    for _ in range(2100):  # each pass halves the bracket; floats have 2^64 values
+        if lo >= hi:
+            break
+        mid = lo + (hi - lo) / 2
+        if mid in (lo, hi):
+            mid = lo
+        if forward(mid) < target:
+            lo = math.nextafter(mid, math.inf)
+        else:
+            hi = mid
+    return lo if forward(lo) == target else base
 
 
 def _origin(x, q, com):
@@ -40,6 +60,13 @@ def _origin(x, q, com):
     return [_shortest(float(x[k]), float(x[k]) - t[k], lambda p, k=k: p + t[k]) for k in range(2)]
 
 
+def _reaches(origin, x, q, com) -> bool:
+    """Whether World.add_body maps ``origin`` to the centre of mass ``x`` exactly."""
+    c, s = math.cos(q), math.sin(q)
+    t = (c * com[0] - s * com[1], s * com[0] + c * com[1])
+    return all(origin[k] + t[k] == float(x[k]) for k in range(2))
+
+
 def _anchor(local, com):
     """Anchor in body coordinates that World.add_spring maps back to ``local`` (relative to com)."""
     return [_shortest(float(local[k]), float(local[k]) + float(com[k]), lambda p, k=k: p - float(com[k]))
@@ -47,7 +74,13 @@ def _anchor(local, com):
 
 
 def _same(a, b) -> bool:
-    return json.dumps(a) == json.dumps(b)  # distinguishes -0.0 from 0.0, unlike ==
+    """Equal as JSON text: distinguishes -0.0 from 0.0 (unlike ==) and 1 from 1.0.  Floats and
+    pairs of them (every fixture of a 100,000-point chain asks) take the fast path."""
+    if type(a) is float and type(b) is float:
+        return a == b and math.copysign(1.0, a) == math.copysign(1.0, b)
+    if type(a) is tuple and type(b) is tuple and len(a) == len(b):
+        return all(_same(x, y) for x, y in zip(a, b))
+    return json.dumps(a) == json.dumps(b)
 
 
 def _put(out: dict, key, value, default):
@@ -70,6 +103,10 @@ def body_dict(world, body, name, color=None) -> dict:
     else:
         out["shapes"] = specs
     out["position"] = _origin(B.x[s], float(B.q[s]), B.com[s])
+    if not _reaches(out["position"], B.x[s], float(B.q[s]), B.com[s]):
+        # no origin maps to this centre exactly (the step moved it off the grid origin + R com
+        # can reach): the centre itself, which the loader then takes to the bit
+        out["center_of_mass"] = _vec(B.x[s])
     _put(out, "angle", float(B.q[s]), fmt.BODY_DEFAULTS["angle"])
     _put(out, "velocity", _vec(B.v[s]), fmt.BODY_DEFAULTS["velocity"])
     _put(out, "angular_velocity", float(B.w[s]), fmt.BODY_DEFAULTS["angular_velocity"])
@@ -77,6 +114,9 @@ def body_dict(world, body, name, color=None) -> dict:
     _put(out, "restitution", float(B.e[s]), fmt.BODY_DEFAULTS["restitution"])
     mu_s, mu_d = float(B.mu_s[s]), float(B.mu_d[s])
     _put(out, "friction", mu_s if mu_s == mu_d else {"static": mu_s, "dynamic": mu_d}, fmt.BODY_DEFAULTS["friction"])
+    if B.kind[s] == DYNAMIC and not B.awake[s]:
+        out["asleep"] = int(B.island[s])
+    _put(out, "sleep_time", float(B.sleep_t[s]), 0.0)
     if color is not None:
         out["color"] = color
     return out
@@ -121,6 +161,9 @@ def world_dict(world) -> dict:
            "integrator": world.integrator, "sleeping": world.sleeping}
     _put(out, "broadphase", world.broadphase, fmt.WORLD_DEFAULTS["broadphase"])
     _put(out, "narrowphase", world.narrowphase, fmt.WORLD_DEFAULTS["narrowphase"])
+    _put(out, "time", float(world.time), 0.0)
+    if world.steps:
+        out["steps"] = int(world.steps)
     return out
 
 

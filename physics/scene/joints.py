@@ -45,7 +45,7 @@ def _prop(schema, doc, default=None):
 
 def _kind_schema(kind) -> dict:
     props = {"kind": {"const": kind}, "a": {}, "b": {}, "name": {}, "collide_connected": {},
-             "break_force": {}, "break_torque": {}}
+             "break_force": {}, "break_torque": {}, "broken": {}}
     for g in jp.GEOMETRY[kind]:
         props[g] = _prop(_VEC if g not in ("reference_angle",) else {"type": "number"}, _GEOMETRY_DOC[g])
     for name, p in jp.PARAMS[kind].items():
@@ -71,6 +71,8 @@ JOINT_SCHEMA = {
                         "description": "reaction force (N) at which the joint breaks; null: never"},
         "break_torque": {"type": ["number", "null"], "exclusiveMinimum": 0, "default": None,
                          "description": "reaction torque (N m) at which the joint breaks; null: never"},
+        "broken": {"type": "boolean", "default": False,
+                   "description": "the joint has broken and holds nothing (saved so it stays broken)"},
     },
     "allOf": [_kind_schema(k) for k in JOINT_KINDS],
 }
@@ -104,15 +106,17 @@ def joint_problems(bodies, joints, bad) -> list:
 def add_joints(world, joints, by_name, scene_error, source) -> None:
     """Build every joint of the (checked) scene data; a refusal names the joint's path."""
     for i, jd in enumerate(joints):
-        kw = {k: v for k, v in jd.items() if k not in ("kind", "a", "b")}
+        kw = {k: v for k, v in jd.items() if k not in ("kind", "a", "b", "broken")}
         for k, v in kw.items():
             if isinstance(v, list):
                 kw[k] = tuple(v)
         b = jd.get("b")
         try:
-            world.add_joint(jd["kind"], by_name[jd["a"]], None if b is None else by_name[b], **kw)
+            joint = world.add_joint(jd["kind"], by_name[jd["a"]], None if b is None else by_name[b], **kw)
         except (ValueError, TypeError) as exc:
             raise scene_error(source, [(f"joints[{i}]", str(exc))]) from None
+        if jd.get("broken"):
+            world._break_joint(joint)
 
 
 def joint_dict(world, j, names, anchor, same) -> dict:
@@ -149,4 +153,6 @@ def joint_dict(world, j, names, anchor, same) -> dict:
         v = getattr(j, name)
         if v is not None:
             out[name] = v
+    if j.broken:
+        out["broken"] = True
     return out

@@ -12,6 +12,9 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
+
+from .file_kind import open_regular
 
 
 class NonFinite:
@@ -72,22 +75,32 @@ def _object(pairs):
     return out
 
 
+_LONG_NUMBER = re.compile(r"[eE][+-]?\d{3}|\d{300}")
+
+
 def parse(text: str):
     """json.loads, strictly: NaN, Infinity and numbers beyond float range become NonFinite,
     objects with a repeated key Duplicates; ValueError for invalid or too deeply nested JSON."""
+    # json's own number parsing runs in C; a Python hook per number was most of the time of a 50 MB
+    # file.  Integers of fewer than 300 digits are finite floats, and a float leaves the range only
+    # with a 3-digit exponent or hundreds of digits, so the hooks (which keep the literal for the
+    # message) run only when such a literal is present.  The rare rest (299 digits, then e99)
+    # parses to inf, which value_problems refuses all the same, naming its path.
+    hooks = {"parse_float": _float, "parse_int": _int} if _LONG_NUMBER.search(text) else {}
     try:
-        return json.loads(text, parse_constant=NonFinite, parse_float=_float, parse_int=_int,
-                          object_pairs_hook=_object)
+        return json.loads(text, parse_constant=NonFinite, object_pairs_hook=_object, **hooks)
     except RecursionError:  # json's C scanner recurses once per level (about 1000 allowed)
         raise ValueError("nested too deeply for a scene file") from None
 
 
 def read_text(path, max_bytes: int) -> str:
-    """The file's text, refusing oversized files before reading them (OSError, ValueError)."""
-    size = os.stat(path).st_size
-    if size > max_bytes:
-        raise ValueError(f"file is {size / 2**20:.1f} MB; scene files are limited to {max_bytes / 2**20:.0f} MB")
-    with open(path, "rb") as f:
+    """The file's text, refusing oversized files before reading them (OSError, ValueError) and
+    anything but a regular file (file_kind.NotRegularFile, an OSError)."""
+    fd = open_regular(path)  # a FIFO or device would block or never end
+    with os.fdopen(fd, "rb") as f:
+        size = os.fstat(f.fileno()).st_size
+        if size > max_bytes:
+            raise ValueError(f"file is {size / 2**20:.1f} MB; scene files are limited to {max_bytes / 2**20:.0f} MB")
         data = f.read(max_bytes + 1)  # the file may have grown since stat
     if len(data) > max_bytes:
         raise ValueError(f"file is over the {max_bytes / 2**20:.0f} MB limit for scene files")

@@ -7,11 +7,11 @@ all of them and never half-builds a world.
 from __future__ import annotations
 
 import math
-import os
 
 import numpy as np
 
 from . import schema as fmt
+from .atomic import scene_path
 from .checks import check
 from .joints import add_joints
 from .json_io import parse, read_text
@@ -20,7 +20,7 @@ from .problems import scene_error
 
 def read_scene(path) -> dict:
     """Parse a scene file into plain data without checking it (SceneError for unreadable files)."""
-    src = os.fspath(path)
+    src = scene_path(path)
     try:
         text = read_text(src, fmt.MAX_FILE_BYTES)
     except OSError as exc:
@@ -38,7 +38,7 @@ def read_scene(path) -> dict:
 
 def load_scene(path):
     """Load a scene file into a new World; raises SceneError listing every problem."""
-    src = os.fspath(path)
+    src = scene_path(path)
     return scene_from_dict(read_scene(src), source=src)
 
 
@@ -59,6 +59,8 @@ def _build(data, shapes, source):
                       settings=w["settings"])
     except (ValueError, KeyError, ImportError) as exc:  # the checks should have caught it; say so anyway
         raise scene_error(source, [("world", str(exc))]) from None
+    world.time = w.get("time", 0.0)
+    world.steps = w.get("steps", 0)
     handles = {}
     for i, (b, shape) in enumerate(zip(data["bodies"], shapes)):
         handles[i] = _add_body(world, b, shape, f"bodies[{i}]", source)
@@ -66,6 +68,7 @@ def _build(data, shapes, source):
     for i, sp in enumerate(data.get("springs", [])):
         _add_spring(world, sp, by_name, f"springs[{i}]", source)
     add_joints(world, data.get("joints", []), by_name, scene_error, source)
+    _sleep_state(world, data["bodies"], handles)
     world.metadata.update({k: data[k] for k in ("name", "description", "camera") if k in data})
     # the sandbox's body colours are app data: kept beside the world, by body id, never in the core
     colors = {handles[i].id: b["color"].lower() for i, b in enumerate(data["bodies"]) if "color" in b}
@@ -74,10 +77,30 @@ def _build(data, shapes, source):
     return world
 
 
+# what a running world changed in a body, set once every body is built
+_STATE = ("asleep", "sleep_time", "center_of_mass")
+
+
+def _sleep_state(world, bodies, handles) -> None:
+    """Each body's sleep timer, and the sleeping islands: one fresh island label per number the
+    file gives (numbers are the file's, labels the world's), at rest."""
+    islands = {}
+    for i, b in enumerate(bodies):
+        body = handles[i]
+        if "sleep_time" in b:
+            world._bodies.view.sleep_t[body._s] = b["sleep_time"]
+        if "center_of_mass" in b:  # exact where no origin reaches it (dump.py)
+            world._bodies.view.x[body._s] = b["center_of_mass"]
+        if "asleep" in b and body.kind == "dynamic" and world.sleeping:
+            islands.setdefault(b["asleep"], []).append(body)
+    for members in islands.values():
+        world._put_to_sleep(members)
+
+
 def _add_body(world, b, fixtures, path, source):
     """One body from its (shape, fixture fields) pairs: the body's material first, then each
     fixture's own fields (a fixture's density moves the centre of mass: set before stepping)."""
-    kw = {**fmt.BODY_DEFAULTS, **{k: v for k, v in b.items() if k not in ("shape", "shapes", "color")}}
+    kw = {**fmt.BODY_DEFAULTS, **{k: v for k, v in b.items() if k not in ("shape", "shapes", "color") + _STATE}}
     try:
         body = world.add_body([sh for sh, _ in fixtures], **kw)
         weighed = False

@@ -27,6 +27,10 @@ MAX_FILE_BYTES = 50 * 1024 * 1024
 MAX_BODIES = 1_000_000
 # the format nests 7 deep (bodies[i].shapes[j].polygon[k][l]); deeper data is refused before the schema
 MAX_DEPTH = 32
+# no legal scene comes near these (the work limit, budget.py, allows about a million values):
+# refused while the values are walked, so a 50 MB file of one list is not walked to its end
+MAX_VALUES = 1_500_000
+MAX_ITEMS = 1_000_000
 # a SceneError lists at most this many problems (a hostile file can have millions)
 MAX_PROBLEMS = 100
 
@@ -108,6 +112,9 @@ _BODY = {
         "shapes": {"type": "array", "minItems": 1, "items": {"$ref": "#/$defs/shape"},
                    "description": "the body's shapes (version 2; instead of shape)"},
         "position": _vec("body origin in world coordinates (m)"),
+        "center_of_mass": _vec("world position of the centre of mass (m), to the bit; written only when no "
+                               "position maps to it exactly (a moved body's centre can lie off that grid); "
+                               "when given it is used, position gives the frame only"),
         "angle": _num("rotation about the body origin (rad, counter-clockwise)", default=0.0),
         "velocity": _vec("velocity of the centre of mass (m/s); ignored for static bodies", default=[0.0, 0.0]),
         "angular_velocity": _num("rad/s, counter-clockwise; ignored for static bodies", default=0.0),
@@ -115,6 +122,11 @@ _BODY = {
         "restitution": _num("bounciness 0..1 (contacts take the larger of the two)", minimum=0, maximum=1,
                             default=BODY_DEFAULTS["restitution"]),
         "friction": {"$ref": "#/$defs/friction"},
+        "asleep": {"type": "integer", "minimum": 0, "maximum": 2 ** 62,
+                   "description": "a sleeping body: the number of its island (bodies with one number sleep and "
+                                  "wake together; dynamic bodies only); absent: awake.  A sleeping body is at "
+                                  "rest: its velocity is not used"},
+        "sleep_time": _num("time (s) the body has stayed below the sleep thresholds", minimum=0, default=0.0),
         "color": {"type": "string", "pattern": COLOR_PATTERN, "examples": ["#e07a5f"],
                   "description": "fill colour in the sandbox, \"#rrggbb\" (ignored by the physics); "
                                  "optional: a palette colour otherwise"},
@@ -144,7 +156,9 @@ _WORLD = {
     "additionalProperties": False,
     "properties": {
         "gravity": _vec("m/s^2", default=WORLD_DEFAULTS["gravity"]),
-        "dt": _num("time step (s)", exclusiveMinimum=0, default=WORLD_DEFAULTS["dt"]),
+        # maximum: physics.world.DT_MAX (a test keeps the two equal; the schema imports no world)
+        "dt": _num("time step (s), at most an hour", exclusiveMinimum=0, maximum=3600.0,
+                   default=WORLD_DEFAULTS["dt"]),
         "solver": {"type": "string", "default": WORLD_DEFAULTS["solver"],
                    "description": f"solver mode: {', '.join(SOLVERS)} "
                                   "(checked against the modes this build has)"},
@@ -158,6 +172,9 @@ _WORLD = {
         "sleeping": {"type": "boolean", "default": True, "description": "resting islands sleep"},
         "broadphase": {"enum": BROADPHASES, "default": WORLD_DEFAULTS["broadphase"], "description": "auto picks by body count"},
         "narrowphase": {"enum": NARROWPHASES, "default": WORLD_DEFAULTS["narrowphase"], "description": "polygon-polygon test"},
+        "time": _num("simulated time (s) when the scene was saved", minimum=0, default=0.0),
+        "steps": {"type": "integer", "minimum": 0, "maximum": 2 ** 62, "default": 0,
+                  "description": "steps taken when the scene was saved"},
     },
 }
 

@@ -40,7 +40,7 @@ class PairFilter:
             self._seen.add(key)
             v = self.verdicts.get(key)
             if v is None:
-                v = self.verdicts[key] = bool(world._pair_filter(handles[int(first[k])], handles[int(second[k])]))
+                v = self.verdicts[key] = _ask(world, handles[int(first[k])], handles[int(second[k])])
             ok[k] = v
         if not ok.all():
             keep = np.nonzero(ok)[0]
@@ -57,6 +57,21 @@ class PairFilter:
             if i is None or j is None or not _overlap(box[i], box[j]):
                 del self.verdicts[key]
         self._seen = set()
+
+
+def _ask(world, a, b) -> bool:
+    """The filter's verdict on fixtures a and b.  The world refuses edits while it runs
+    (world._check_editable), and anything it raises becomes a refused step: SimulationError, so
+    step() reverts the world and sets world.fault instead of leaving it half-stepped."""
+    from ..errors import SimulationError
+    world._in_callback += 1
+    try:
+        return bool(world._pair_filter(a, b))
+    except Exception as exc:  # noqa: BLE001  (user code: any exception refuses the step)
+        raise SimulationError(f"pair_filter raised {type(exc).__name__}: {exc}; the world was reverted to the "
+                              "state before the step", stage="collide") from exc
+    finally:
+        world._in_callback -= 1
 
 
 def _overlap(a, b) -> bool:

@@ -63,6 +63,20 @@ class Table:
         self.n += 1
         return oid, s
 
+    def add_many(self, k: int) -> tuple[list, range]:
+        """Append ``k`` zeroed entries at once (a chain's segments); returns (ids, slots), as ``k``
+        calls of ``add`` would."""
+        self._ensure(self.n + k)
+        slots = range(self.n, self.n + k)
+        for a in self.arrays.values():
+            a[slots.start:slots.stop] = 0
+        ids = list(range(self._next_id, self._next_id + k))
+        self._next_id += k
+        self.arrays["id"][slots.start:slots.stop] = ids
+        self.slot_of.update(zip(ids, slots))
+        self.n += k
+        return ids, slots
+
     def remove(self, oid: int) -> tuple[int, int]:
         """Swap-remove; returns (removed slot, slot the last entry came from)."""
         s = self.slot_of.pop(oid)
