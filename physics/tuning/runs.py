@@ -57,7 +57,8 @@ def _word(v) -> str:
 class Run:
     """What one run recorded: positions (K, n, 2, m) and angles (K, n, rad) of the dynamic bodies
     at the K sample times, kinetic and potential energy (K, J), speeds (K, n, m/s), the deepest contact seen at a sample (m), the
-    seconds spent in ``world.step`` (sampling excluded), and the error if a step was refused.
+    CPU seconds this thread spent in ``world.step`` (sampling excluded: a rank, not a benchmark), and
+    the error if a step was refused.
     ``links`` (K, m, m): each spring's length, then each joint's anchor gap |anchor_a - anchor_b|,
     at each sample; ``pins`` (m,): which of them should be 0 (revolute and weld joints)."""
 
@@ -143,17 +144,20 @@ def run_case(scene: dict, cand: Candidate, steps: int, stride: int) -> Run:
     dyn = [b for b in world.bodies if b.kind == "dynamic"]
     samples = [_sample(world, dyn)]
     seconds, done, error = 0.0, 0, None
+    # CPU seconds of this thread, not wall time: a sweep shares the machine with its other
+    # workers (and whatever else runs), and a run that waited for a core did not cost more
+    clock = time.thread_time
     for _ in range(steps // stride):
-        t0 = time.perf_counter()
+        t0 = clock()
         try:
             for _ in range(per_sample):
                 world.step()
                 done += 1
         except SimulationError as exc:
-            seconds += time.perf_counter() - t0
+            seconds += clock() - t0
             error = str(exc)[:300]
             break
-        seconds += time.perf_counter() - t0
+        seconds += clock() - t0
         samples.append(_sample(world, dyn))
     x, a, ke, pe, v, d, ln = (np.array(col, dtype=np.float64) for col in zip(*samples))
     k = len(samples)
