@@ -13,18 +13,50 @@ import numpy as np
 f8, i1, i4, i8 = np.float64, np.int8, np.int32, np.int64
 
 
-def allocate(fields: dict, cap: int) -> dict:
-    """Zeroed arrays for ``fields`` (name: (per-entry shape, dtype)) with ``cap`` entries."""
-    return {k: np.zeros((cap,) + shp, dtype=dt) for k, (shp, dt) in fields.items()}
+class Columns(dict):
+    """A table's fields (name -> array) as column views of two row-major 2-D arrays: ``F``
+    (float64, one row per entry) and ``I`` (int64).  One entry's state is one row, as in Box2D
+    v3's body and contact records, and a kernel can take the two arrays with named column
+    constants instead of one argument per field (docs/flat-step.md).  Integer fields of any
+    width are int64 columns; unsigned 64-bit ones (filter bits) are viewed as uint64."""
+
+    F: np.ndarray
+    I: np.ndarray
+    spec: tuple
 
 
-def grown(arrays: dict, cap: int) -> dict:
-    """Copies of ``arrays`` with a larger first dimension (contents kept)."""
-    out = {}
-    for k, a in arrays.items():
-        b = np.zeros((cap,) + a.shape[1:], dtype=a.dtype)
-        b[: len(a)] = a
-        out[k] = b
+def _columns(spec, cap: int) -> Columns:
+    nf = sum(int(np.prod(shp)) for _, shp, dt in spec if dt.kind == "f")
+    ni = sum(int(np.prod(shp)) for _, shp, dt in spec if dt.kind != "f")
+    out = Columns()
+    out.F = np.zeros((cap, max(nf, 1)))
+    out.I = np.zeros((cap, max(ni, 1)), np.int64)
+    out.spec = spec
+    fc = ic = 0
+    for name, shp, dt in spec:
+        w = int(np.prod(shp))
+        if dt.kind == "f":
+            base, c = out.F, fc
+            fc += w
+        else:
+            base, c = out.I, ic
+            ic += w
+        view = base[:, c] if not shp else base[:, c:c + w].reshape((cap,) + shp)
+        out[name] = view.view(np.uint64) if dt == np.uint64 else view
+    return out
+
+
+def allocate(fields: dict, cap: int) -> Columns:
+    """Zeroed fields (name: (per-entry shape, dtype)) with ``cap`` entries, as columns."""
+    return _columns(tuple((k, tuple(shp), np.dtype(dt)) for k, (shp, dt) in fields.items()), cap)
+
+
+def grown(arrays: Columns, cap: int) -> Columns:
+    """The same fields with a larger first dimension (contents kept)."""
+    out = _columns(arrays.spec, cap)
+    n = len(arrays.F)
+    out.F[:n] = arrays.F
+    out.I[:n] = arrays.I
     return out
 
 
