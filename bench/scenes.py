@@ -57,7 +57,9 @@ def columns(n=1000, height=10, friction=0.6) -> dict:
     return make_desc(f"Columns {n}", f"{n} boxes in {ncol} columns of {height}", bodies)
 
 
-GENERATORS = {"pyramid": pyramid, "rain": rain, "columns": columns}
+from .small_descs import SMALL, small  # noqa: E402  (the small scenes' descriptions)
+
+GENERATORS = {"pyramid": pyramid, "rain": rain, "columns": columns, "small": small}
 
 
 # -- the table ----------------------------------------------------------------------------------
@@ -109,6 +111,11 @@ for _name in SHAPE_BENCH:
     SCENES[f"shapes_{_name}"] = BenchScene(f"scenes/{_name}.json (shapes)", "max_penetration",
                                            dict(steps=300, chunk=20, warm=40), None, False, file=f"{_name}.json",
                                            keep_world=True, engines=("pymunk",))
+# the small scenes most people build (bench/small_descs.py): beside pymunk, many steps each
+for _name in SMALL:
+    SCENES[f"small_{_name}"] = BenchScene(f"{_name} (generated)", "max_penetration",
+                                          dict(steps=3000, chunk=200, warm=200), None, False,
+                                          gen=("small", {"which": _name}), keep_world=True, engines=("pymunk",))
 ERROR_LABEL = {"top_drift": "top-box drift after the run (m)", "max_penetration": "max penetration at the end (m)"}
 
 

@@ -9,6 +9,7 @@ real hits (a test that compared nothing would pass).
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -16,6 +17,8 @@ import physics
 from tests.queries.reference import cast_fraction, point_distance, ray_fraction, separation, world_core
 from tests.queries.worlds import all_fixtures, coord, worlds
 
+# one worker, in file order: the last test counts the hits the others compared (pytest-xdist)
+pytestmark = pytest.mark.xdist_group("query_reference")
 CFG = settings(max_examples=40, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
 TOL = 1e-7
 points = st.tuples(coord, coord)
