@@ -73,6 +73,9 @@ def make_spring(world, spec: dict):
 
 class Command:
     label = ""
+    #: made by the sandbox itself (the world bound's removals), not by the user: it can be undone,
+    #: but it does not make the document unsaved
+    automatic = False
 
     def do(self, app) -> None:
         raise NotImplementedError
@@ -314,7 +317,8 @@ class History:
         self.done: list[Command] = []
         self.undone: list[Command] = []
         self.limit = limit
-        self.version = 0   # bumps on every change; the document is clean at `saved_version`
+        self.version = 0   # bumps on every change (caches and the timeline watch it)
+        self.edits = 0     # bumps on the user's changes only: the document is clean at `saved_edits`
 
     def execute(self, app, cmd: Command) -> None:
         """Run a command and record it; a ValueError from the core leaves nothing recorded."""
@@ -326,7 +330,7 @@ class History:
             self.done.append(cmd)
             if len(self.done) > self.limit:
                 self.done.pop(0)
-        self.version += 1
+        self._changed(cmd)
 
     def undo(self, app) -> str | None:
         if not self.done:
@@ -334,7 +338,7 @@ class History:
         cmd = self.done.pop()
         cmd.undo(app)
         self.undone.append(cmd)
-        self.version += 1
+        self._changed(cmd)
         return cmd.label
 
     def redo(self, app) -> str | None:
@@ -343,8 +347,13 @@ class History:
         cmd = self.undone.pop()
         cmd.do(app)
         self.done.append(cmd)
-        self.version += 1
+        self._changed(cmd)
         return cmd.label
+
+    def _changed(self, cmd):
+        self.version += 1
+        if not cmd.automatic:
+            self.edits += 1
 
     def clear(self):
         self.done.clear()

@@ -57,17 +57,17 @@ class Document:
         self.path = Path(path) if path else None
         self.history = History()
         self.refs = Refs()
-        self.saved_version = 0
+        self.saved_edits = 0
         self.loaded = snapshot(world)
 
     @property
     def dirty(self) -> bool:
-        return self.history.version != self.saved_version
+        return self.history.edits != self.saved_edits
 
     def mark_saved(self, path: Path):
         """After a save (the editor's colours already in ``world.metadata``, as the file has them)."""
         self.path = Path(path)
-        self.saved_version = self.history.version
+        self.saved_edits = self.history.edits
         self.loaded = snapshot(self.world)
 
     @property

@@ -15,8 +15,8 @@ from OpenGL import GL
 from . import compile_units, framing
 from .autosave import Autosaver
 from .bound import WorldBound
+from .bound_removal import remove_escapees
 from .camera import Camera
-from .commands import RemoveBodies
 from .compare import Comparison
 from .compare_view import CompareView
 from .editor import Editor
@@ -252,20 +252,10 @@ class Sandbox(pyglet.window.Window):
         self._scene_pending = None
 
     def check_bound(self):
-        """Remove the moving bodies that crossed the world bound this frame (one undoable edit);
-        returns the render data to draw."""
+        """Remove the moving bodies that crossed the world bound this frame; returns the render
+        data to draw."""
         rd = self.world.render_data()
-        gone = set(self.bound.crossed(rd).tolist())
-        if not gone:
-            return rd
-        bodies = [b for b in self.world.bodies if b.id in gone]
-        cmd = RemoveBodies(self.editor, bodies)
-        cmd.label = f"remove {len(bodies)} bodies that left the world bound"
-        self.editor.execute(cmd)
-        n = len(bodies)
-        self.notices.notify(f"{n} bod{'y' if n == 1 else 'ies'} left the world bound and "
-                            f"{'was' if n == 1 else 'were'} removed (Ctrl+Z brings {'it' if n == 1 else 'them'} back)")
-        return self.world.render_data()
+        return self.world.render_data() if remove_escapees(self, rd) else rd
 
     def follow_camera(self):
         """Keep the followed body (L) at the middle of the free area."""
