@@ -9,6 +9,7 @@ import pyglet
 from imgui_bundle import imgui
 from pyglet.window import key, mouse
 
+from .picking import body_at
 from .shortcuts import handle_key
 
 MODIFIER_KEYS = {key.LSHIFT, key.RSHIFT, key.LCTRL, key.RCTRL, key.LALT, key.RALT, key.LMETA, key.RMETA,
@@ -61,7 +62,7 @@ class SceneInput:
             ed.hovered = None
             return
         try:
-            ed.hovered = ed.world.query_point(tuple(ed.cursor))
+            ed.hovered = body_at(ed.world, tuple(ed.cursor))
         except ValueError:
             ed.hovered = None
 
@@ -128,7 +129,7 @@ class SceneInput:
     def context_menu(self):
         """A right click without a drag on a body: its context menu (nothing on empty space)."""
         try:
-            b = self.editor.world.query_point(tuple(self.editor.cursor))
+            b = body_at(self.editor.world, tuple(self.editor.cursor))
         except ValueError:
             return
         if b is not None:
