@@ -1,12 +1,13 @@
 """The world bound's removals are the sandbox's doing, not the user's edits: a shipped scene loses
 no bodies in normal play, a removal leaves the document clean (another scene opens without a
-question)."""
+question), and its undo brings a body back inside the bound, at rest."""
 from __future__ import annotations
 
 import pytest
 
 from sandbox_pixels import ROOT, body_pixels
 from test_saving import centre, scene_point
+from test_tools import body, to_screen
 from test_world_bound import runner_scene
 
 pytestmark = pytest.mark.app
@@ -46,3 +47,26 @@ def test_a_removal_leaves_the_document_clean(launch, tmp_path):
     assert st["dialog"] is None and st["path"] == str(arch), f"asked: {st['dialog']}"
     assert not st["dirty"]
 
+
+def test_undo_of_a_removal_brings_the_body_back_inside_at_rest(launch, tmp_path):
+    app = launch(runner_scene(tmp_path / "runner.json"))
+    st0 = app.wait_ready(2)
+    n0 = st0["n_bodies"]
+    lo, hi = st0["bound"]["lo"], st0["bound"]["hi"]
+    app.wait(lambda s: s["n_bodies"] == n0 - 1, 30, "the runner to leave the bound")
+    app.xdo("mousemove", *scene_point(st0))
+    app.settle()
+    app.key("space")                            # pause
+    app.key("ctrl+z")
+    st = app.wait(lambda s: s["n_bodies"] == n0, 10, "the runner back")
+    r = body(st, "runner")
+    assert lo[0] <= r["position"][0] <= hi[0] and lo[1] <= r["position"][1] <= hi[1], r["position"]
+    assert r["velocity"] == pytest.approx([0.0, 0.0]) and r["angular_velocity"] == pytest.approx(0.0)
+    assert r["position"][0] > hi[0] - 3.0, "not where it was last inside"
+    # it is drawn where it is, and playing on it stays (at rest on nothing, it falls inside the bound)
+    img = app.screenshot("runner_back")
+    x, y = map(int, to_screen(st, r["position"]))
+    assert body_pixels(img, x - 6, x + 6, y - 6, y + 6, static=False) > 50, "the runner is not drawn"
+    app.key("space")
+    st = app.frames(30)
+    assert st["n_bodies"] == n0
