@@ -3,8 +3,9 @@
 Scrubbing restores the snapshot at or before the chosen time (``world.restore``: bit-identical
 continuation); stepping on from a scrubbed moment discards the snapshots after it.  The core
 restores only into a world with the same bodies, fixtures, springs and joints, so an edit that
-changes the topology (add, delete, the mouse drag's joint) clears the timeline; so does a reset
-or another document.  Cost for a 1000-body scene: docs/sandbox.md, "Timeline"."""
+changes the topology (add, delete) clears the timeline; so does a reset or another document.  A
+drag holds the mouse joint only while the button is down: no snapshot is taken then, and the
+snapshots before and after it stay (a throw can be rewound).  Cost for a 1000-body scene: docs/sandbox.md, "Timeline"."""
 from __future__ import annotations
 
 from collections import deque
@@ -60,12 +61,9 @@ class Timeline:
         exact multiples of the interval's steps).  If the world steps on from a scrubbed moment,
         the snapshots after it go first; then a snapshot if ``interval`` has passed since the
         newest one (half a step early, so float sums of dt do not skip one)."""
-        if self.held:                 # stepping with the mouse drag's joint: the old snapshots no longer fit
-            self.clear()
-        if self.cursor is not None:
-            while len(self.entries) > self.cursor + 1:
-                self.entries.pop()
-            self.cursor = None
+        self.drop_future()
+        if self.held:     # the mouse drag's joint is no edit: the drag is a gap between snapshots
+            return
         t = world.time
         if not self.entries or t >= self.entries[-1][0] + self.interval - 0.5 * world.dt:
             snap = world.snapshot()
@@ -75,13 +73,21 @@ class Timeline:
             while len(self.entries) > self.capacity:
                 self.entries.popleft()
 
+    def drop_future(self):
+        """The world steps on from a scrubbed moment (played or single-stepped): the snapshots
+        after it showed a future that no longer happens."""
+        if self.cursor is not None:
+            while len(self.entries) > self.cursor + 1:
+                self.entries.pop()
+            self.cursor = None
+
     def watch(self, world, signature, transient=False):
         """Clear the timeline if the world's topology changed.  ``signature`` is anything that
         changes with every edit (history version, counts of bodies and joints): only then are the
         world's ids compared with the newest snapshot's.  ``transient``: a tool's joint exists
-        (a click on a dynamic body holds a mouse joint until release), which is no edit: the
-        timeline is only held (no scrubbing) until the joint goes, or cleared if the world steps
-        with it.  Returns True if it cleared."""
+        (a drag holds a mouse joint until release), which is no edit: the timeline is only held
+        (no scrubbing, no snapshots) until the joint goes, and the drag or throw stays on it as
+        the steps between two snapshots.  Returns True if it cleared."""
         if signature == self._signature:
             return False
         self._signature = signature

@@ -223,6 +223,8 @@ class Sandbox(pyglet.window.Window):
     def _after_step(self, world):
         if self.sim.running:       # a single step (S) from a paused moment does not record
             self.timeline.record(world)
+        else:                      # but it is the new future of a scrubbed moment
+            self.timeline.drop_future()
         self.panels.stats.contacts.rate.on_step(world)   # the selected body's hits (stats readout)
 
     def preview_scene(self) -> float:

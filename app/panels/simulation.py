@@ -36,6 +36,7 @@ class SimulationSection(Section):
             app.editor.set_step_rate(hz)
         g = list(w.gravity)
         ch, g = imgui.input_float2("gravity", g, "%.2f", ENTER)
+        record(app, "sim:gravity")
         if ch:
             app.editor.set_world("gravity", tuple(g), lambda v: setattr(w, "gravity", v), lambda: w.gravity)
         if app.editor.edit_error and not app.editor.selection:
