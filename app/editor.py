@@ -101,6 +101,7 @@ class Editor:
         self.selection = []
         self.hovered = None
         self.follow = None
+        self.edit_error = ""           # a refusal in the last scene says nothing about this one
         self.doc = Document(world, path)
         self.colors = from_metadata(world, self.doc.refs)   # the file's colours (a reset's too)
         self.tracers.reset(world, self.doc.refs, keep=keep_camera)   # a reset clears the trails
