@@ -56,6 +56,8 @@ class Editor:
         self.follow = None                     # Ref of the body the camera follows (L), or None
         self.tracers = Tracers()               # trails behind points of bodies (tracer tool, context menu)
         self.lasers = Lasers()                 # the laser tool's emitters and their beams
+        self.tracers.from_metadata(world, self.doc.refs)      # those the scene file has
+        self.lasers.from_metadata(world, self.doc.refs)
         self.tools = {cls.name: cls(self) for cls in TOOLS}
         self.tool_names = [cls.name for cls in TOOLS]
         self.tool = self.tools["select"]
@@ -326,9 +328,12 @@ class Editor:
         if rgb != self.colors.get(self.refs.of(body)):
             self.execute(SetColor(self, body, rgb))
 
-    def sync_colors(self):
-        """Before a save: the colours go where the scene saver reads them (world.metadata)."""
+    def sync_app_data(self):
+        """Before a save: the colours, lasers and tracers go where the scene saver reads them
+        (world.metadata)."""
         to_metadata(self.world, self.colors)
+        self.lasers.to_metadata(self.world)
+        self.tracers.to_metadata(self.world)
 
     def color_of(self, body):
         return self.colors.get(self.refs.of(body))

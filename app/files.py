@@ -76,7 +76,7 @@ class SceneFiles:
         ed.tools["select"].end_joint()
         try:
             target.parent.mkdir(parents=True, exist_ok=True)
-            ed.sync_colors()
+            ed.sync_app_data()
             ed.world.save_scene(str(target))
         except Exception as exc:  # noqa: BLE001
             ed.notify(f"save failed: {exc}", error=True)

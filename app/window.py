@@ -203,7 +203,7 @@ class Sandbox(pyglet.window.Window):
         self.times.record(real_dt, physics=phys_ms, upload=upload_ms, draw=draw_ms, ui=ui_ms,
                           frame=(time.perf_counter() - t_start) * 1e3, plot=self.panels.plot.ms)
         if ready:
-            self.editor.sync_colors()     # the autosave keeps the bodies' colours too
+            self.editor.sync_app_data()     # the autosave keeps colours, lasers and tracers too
             self.autosaver.tick(self.editor.doc, busy=self.editor.tools["select"].joint is not None)
         self._update_caption()
         if self.frame_no == 1:

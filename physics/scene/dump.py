@@ -15,6 +15,7 @@ import math
 from ..store import KIND_NAMES
 from . import schema as fmt
 from .joints import joint_dict
+from .sandbox import sandbox_bodies, sandbox_dict
 from .shapes import shape_objects
 
 
@@ -97,12 +98,13 @@ def spring_dict(world, sp, names) -> dict:
     return out
 
 
-def body_names(world) -> dict:
-    """id -> name; bodies that springs or joints refer to but that have no name get a free ``bodyN``."""
+def body_names(world, also=()) -> dict:
+    """id -> name; bodies that springs or joints (or the ids in ``also``) refer to but that have
+    no name get a free ``bodyN``."""
     names = {b.id: b.name for b in world.bodies}
     taken = {n for n in names.values() if n is not None}
     links = list(world.springs) + list(world.joints)
-    needed = {x.body_a.id for x in links} | {x.body_b.id for x in links if x.body_b is not None}
+    needed = {x.body_a.id for x in links} | {x.body_b.id for x in links if x.body_b is not None} | set(also)
     for i, b in enumerate(world.bodies):
         if names[b.id] is None and b.id in needed:
             name, k = f"body{i}", 0
@@ -132,10 +134,13 @@ def to_dict(world, meta: dict) -> dict:
     out["world"] = world_dict(world)
     if meta.get("camera"):
         out["camera"] = meta["camera"]
-    names = body_names(world)
+    names = body_names(world, sandbox_bodies(meta))
     colors = meta.get("colors") or {}     # body id -> "#rrggbb" (the sandbox's, see load._build)
     out["bodies"] = [body_dict(world, b, names[b.id], colors.get(b.id)) for b in world.bodies]
     out["springs"] = [spring_dict(world, sp, names) for sp in world.springs]
     if world.joints:
         out["joints"] = [joint_dict(world, j, names, _anchor, _same) for j in world.joints]
+    sandbox = sandbox_dict(meta, names)
+    if sandbox:
+        out["sandbox"] = sandbox
     return out
