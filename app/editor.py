@@ -61,7 +61,8 @@ class Editor:
         self.tools = {cls.name: cls(self) for cls in TOOLS}
         self.tool_names = [cls.name for cls in TOOLS]
         self.tool = self.tools["select"]
-        self.edit_error = ""                   # the last refused edit, shown in the inspector
+        self.edit_error = ""                   # the last refused edit, shown beside its field
+        self.on_refusal: list = []             # called on a refusal (the panels note which field)
         self._hint = None                      # (text, world point, time, error) shown at the pointer
         self.on_document: list = []
         self.on_mode: list = []
@@ -134,7 +135,7 @@ class Editor:
             self.edit_error = ""
             return True
         except (ValueError, KeyError) as exc:
-            self.edit_error = str(exc)
+            self.refuse(str(exc))
             self.notify(f"refused: {exc}", error=True)
             return False
 
@@ -149,9 +150,14 @@ class Editor:
             self.edit_error = ""
             return True
         except ValueError as exc:
-            self.edit_error = f"refused: {exc}"
+            self.refuse(f"refused: {exc}")
             self.notify(f"{label} {self.edit_error}", error=True)
             return False
+
+    def refuse(self, text):
+        self.edit_error = text
+        for cb in self.on_refusal:
+            cb()
 
     def drop_shape(self, name, p):
         """A palette button dropped at world point ``p``: the tool's default body there."""
@@ -266,7 +272,7 @@ class Editor:
         """The step rate in Hz (dt = 1/hz), within STEP_RATE; out of range is refused with a message."""
         lo, hi = STEP_RATE
         if not (isinstance(hz, (int, float)) and lo <= hz <= hi):
-            self.edit_error = f"step rate must be between {lo:g} and {hi:g} Hz (got {hz:g} Hz)"
+            self.refuse(f"step rate must be between {lo:g} and {hi:g} Hz (got {hz:g} Hz)")
             self.notify(f"refused: {self.edit_error}", error=True)
             return False
         w = self.world

@@ -26,11 +26,13 @@ class SceneInput:
         self.tool_active = False
         # keyboard focus: shortcuts fire only while the scene has it.  A press on a panel takes it
         # (keys typed into a field that has not or no longer has the keyboard must not act on the
-        # scene); a press in the scene, Esc, or moving the pointer into the scene once no text
-        # field is active gives it back; a press on a panel that activated no text field too.
+        # scene); a press in the scene, Esc, moving the pointer into the scene once no text field
+        # is active, or a field let go from the keyboard (Enter) with its value taken gives it
+        # back; a press on a panel that activated no text field too.
         self.scene_keys = True
         self._panel_press_frame = None
         self._text_used = False
+        self._typing = False       # a text field had the keyboard in the last frame
 
     @property
     def editor(self):
@@ -70,9 +72,15 @@ class SceneInput:
     def after_frame(self):
         """Follow the panels' keyboard use (called once per frame after the UI is drawn)."""
         io = imgui.get_io()
+        typing, self._typing = self._typing, io.want_text_input
         if io.want_text_input:
             self.scene_keys = False
             self._text_used = True
+        elif typing and not imgui.is_any_mouse_down() and not self.editor.edit_error:
+            # the field let go from the keyboard (Enter, Tab, Esc) with its value taken: Space
+            # pauses again; after a refusal the keys stay away from the scene (typing on to
+            # correct the value must not fire shortcuts)
+            self._take_keys()
         elif (not self.scene_keys and not self._text_used and self._panel_press_frame is not None
               and self.app.frame_no > self._panel_press_frame + 1):
             self.scene_keys = True          # the press on the panel was a button, not a text field

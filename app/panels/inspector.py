@@ -12,7 +12,9 @@ from .fixture_inspector import body_text, draw_fixtures
 from .joint_inspector import draw_joint
 from .plot_tab import probe_checkboxes
 from ..render.colors import PALETTE
-from .style import DIM, ENTER, RED
+from .style import DIM, ENTER
+
+# A refusal is shown beside its field (panels/refusal.py), not in the panel, so no field moves.
 
 
 def wrap_degrees(deg: float) -> float:
@@ -50,22 +52,12 @@ class InspectorSection(Section):
             if imgui.button("Static/Dynamic (T)"):
                 ed.toggle_static()
 
-    def error(self):
-        """The last refused edit, near the top where it is seen (the panel may not show its end)."""
-        ed = self.app.editor
-        if ed.edit_error:
-            imgui.push_text_wrap_pos(0)
-            imgui.text_colored(RED, ed.edit_error)
-            imgui.pop_text_wrap_pos()
-            record(self.app, "inspector:error")
-
     def edit(self, item, field, value):
         self.app.editor.set_property(item, field, value)
 
     def body(self, b):
         imgui.text(f"Body {b.name or b.id}: {body_text(b)}")
         imgui.text_colored(DIM, f"mass {b.mass:.4g} kg   inertia {b.inertia:.4g}   {'awake' if b.awake else 'asleep'}")
-        self.error()
         probe_checkboxes(self.app, b)          # near the top: the panel may not show its end
         self.colour(b)
         kinds = ["dynamic", "static", "kinematic"]
@@ -131,7 +123,6 @@ class InspectorSection(Section):
         bname = "world" if sp.body_b is None else (sp.body_b.name or sp.body_b.id)
         imgui.text(f"Spring {sp.name or sp.id}: {a} - {bname}")
         imgui.text_colored(DIM, f"length {sp.length:.3f} m")
-        self.error()
         probe_checkboxes(self.app, sp)
         ch, v = imgui.input_float("stiffness", sp.stiffness, 10.0, 100.0, "%.2f", ENTER)
         if ch:

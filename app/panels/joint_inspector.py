@@ -140,7 +140,6 @@ def draw_joint(section, j):
     imgui.text(f"Joint {j.name or j.id}: {j.kind}, {body_label(j.body_a)} - {body_label(j.body_b)}")
     record(app, "inspector:joint")
     readouts(j)
-    section.error()
     for name, p in jp.PARAMS[j.kind].items():
         parameter(app, j, name, p)
     geometry(app, j)

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
-from .base import Section, record, wrapped
+from .base import Section, record
 from .style import AMBER, DIM, ENTER, RED
 from .timeline import timeline_slider
 
@@ -39,8 +39,6 @@ class SimulationSection(Section):
         record(app, "sim:gravity")
         if ch:
             app.editor.set_world("gravity", tuple(g), lambda v: setattr(w, "gravity", v), lambda: w.gravity)
-        if app.editor.edit_error and not app.editor.selection:
-            wrapped(RED, app.editor.edit_error)
         if sim.fault:
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(RED, f"Simulation error: {sim.fault}")

@@ -29,12 +29,14 @@ def test_a_refusal_is_cleared_by_opening_another_scene(launch):
     app = launch(ROOT / "scenes" / "arch.json", "--paused")
     st = app.wait_ready(10)
     type_into(app, st["ui_rects"]["sim:gravity"], "1e999")
-    st = app.wait(lambda s: "finite" in s["edit_error"], 10, "the refusal")
-    x0, y0, x1, y1 = map(int, st["ui_rects"]["sim:gravity"])
-    below = (x0, y1, x0 + 300, y1 + 40)
-    assert red_text_pixels(app.screenshot("refused"), *below) > 20, "the refusal is not shown under the field"
+    st = app.wait(lambda s: "finite" in s["edit_error"] and "refusal" in s["ui_rects"], 10, "the refusal")
+    st = app.settle()
+    x0, y0, x1, y1 = map(int, st["ui_rects"]["refusal"])
+    beside = (x0, y0, x1, y1)
+    assert red_text_pixels(app.screenshot("refused"), *beside) > 20, "the refusal is not shown beside the field"
     st = open_from_list(app, ROOT / "scenes" / "car.json")
     assert st["dialog"] is None and st["path"].endswith("car.json"), st["dialog"]
     st = app.settle()
     assert st["edit_error"] == ""
-    assert red_text_pixels(app.screenshot("other_scene"), *below) == 0, "the old refusal is still shown"
+    assert "refusal" not in st["ui_rects"]
+    assert red_text_pixels(app.screenshot("other_scene"), *beside) == 0, "the old refusal is still shown"
