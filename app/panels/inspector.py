@@ -15,6 +15,8 @@ from ..render.colors import PALETTE
 from .style import DIM, ENTER
 
 # A refusal is shown beside its field (panels/refusal.py), not in the panel, so no field moves.
+# The number fields here and in the joint and fixture inspectors are doubles (input_double): a
+# float32 field turned a typed 1e30 into 1.0000000150474662e+30 in the refusal, and 1e300 into inf.
 
 
 def wrap_degrees(deg: float) -> float:
@@ -69,27 +71,27 @@ class InspectorSection(Section):
             self.edit(b, "position", tuple(v))
         shown = wrap_degrees(math.degrees(b.angle))
         self.app.ui_values["inspector:angle"] = shown
-        ch, v = imgui.input_float("angle (deg)", shown, 5.0, 45.0, "%.2f", ENTER)
+        ch, v = imgui.input_double("angle (deg)", shown, 5.0, 45.0, "%.2f", ENTER)
         record(self.app, "inspector:angle")
         if ch:
             self.edit(b, "angle", math.radians(wrap_degrees(v)))
         ch, v = imgui.input_float2("velocity", list(b.velocity), "%.3f", ENTER)
         if ch:
             self.edit(b, "velocity", tuple(v))
-        ch, v = imgui.input_float("angular vel.", b.angular_velocity, 0.5, 5.0, "%.3f", ENTER)
+        ch, v = imgui.input_double("angular vel.", b.angular_velocity, 0.5, 5.0, "%.3f", ENTER)
         if ch:
             self.edit(b, "angular_velocity", v)
-        ch, v = imgui.input_float("density", b.density, 0.1, 1.0, "%.3f", ENTER)
+        ch, v = imgui.input_double("density", b.density, 0.1, 1.0, "%.3f", ENTER)
         record(self.app, "inspector:density")
         if ch:
             self.edit(b, "density", v)
-        ch, v = imgui.input_float("restitution", b.restitution, 0.05, 0.2, "%.3f", ENTER)
+        ch, v = imgui.input_double("restitution", b.restitution, 0.05, 0.2, "%.3f", ENTER)
         if ch:
             self.edit(b, "restitution", v)
-        ch, v = imgui.input_float("static friction", b.static_friction, 0.05, 0.2, "%.3f", ENTER)
+        ch, v = imgui.input_double("static friction", b.static_friction, 0.05, 0.2, "%.3f", ENTER)
         if ch:
             self.edit(b, "friction", (v, b.dynamic_friction))
-        ch, v = imgui.input_float("dynamic friction", b.dynamic_friction, 0.05, 0.2, "%.3f", ENTER)
+        ch, v = imgui.input_double("dynamic friction", b.dynamic_friction, 0.05, 0.2, "%.3f", ENTER)
         if ch:
             self.edit(b, "friction", (b.static_friction, v))
         ch, v = imgui.input_text("name", b.name or "", ENTER)
@@ -124,13 +126,13 @@ class InspectorSection(Section):
         imgui.text(f"Spring {sp.name or sp.id}: {a} - {bname}")
         imgui.text_colored(DIM, f"length {sp.length:.3f} m")
         probe_checkboxes(self.app, sp)
-        ch, v = imgui.input_float("stiffness", sp.stiffness, 10.0, 100.0, "%.2f", ENTER)
+        ch, v = imgui.input_double("stiffness", sp.stiffness, 10.0, 100.0, "%.2f", ENTER)
         if ch:
             self.edit(sp, "stiffness", v)
-        ch, v = imgui.input_float("damping", sp.damping, 0.1, 1.0, "%.3f", ENTER)
+        ch, v = imgui.input_double("damping", sp.damping, 0.1, 1.0, "%.3f", ENTER)
         if ch:
             self.edit(sp, "damping", v)
-        ch, v = imgui.input_float("rest length", sp.rest_length, 0.1, 1.0, "%.3f", ENTER)
+        ch, v = imgui.input_double("rest length", sp.rest_length, 0.1, 1.0, "%.3f", ENTER)
         if ch:
             self.edit(sp, "rest_length", v)
         ch, v = imgui.input_float2("anchor a (local)", list(sp.anchor_a), "%.3f", ENTER)

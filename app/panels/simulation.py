@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
+from ..field_bounds import checked_gravity
 from .base import Section, record
 from .style import AMBER, DIM, ENTER, RED
 from .timeline import timeline_slider
@@ -30,7 +31,7 @@ class SimulationSection(Section):
         if ch:
             sim.time_scale = v
         self.speed(sim)
-        ch, hz = imgui.input_float("step rate (Hz)", 1.0 / w.dt, 10.0, 60.0, "%.1f", ENTER)
+        ch, hz = imgui.input_double("step rate (Hz)", 1.0 / w.dt, 10.0, 60.0, "%.1f", ENTER)
         record(app, "sim:step_rate")
         if ch:
             app.editor.set_step_rate(hz)
@@ -38,7 +39,8 @@ class SimulationSection(Section):
         ch, g = imgui.input_float2("gravity", g, "%.2f", ENTER)
         record(app, "sim:gravity")
         if ch:
-            app.editor.set_world("gravity", tuple(g), lambda v: setattr(w, "gravity", v), lambda: w.gravity)
+            app.editor.set_world("gravity", tuple(g), lambda v: setattr(w, "gravity", checked_gravity(v)),
+                                 lambda: w.gravity)
         if sim.fault:
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(RED, f"Simulation error: {sim.fault}")

@@ -29,7 +29,7 @@ def test_a_refusal_is_cleared_by_opening_another_scene(launch):
     app = launch(ROOT / "scenes" / "arch.json", "--paused")
     st = app.wait_ready(10)
     type_into(app, st["ui_rects"]["sim:gravity"], "1e999")
-    st = app.wait(lambda s: "finite" in s["edit_error"] and "refusal" in s["ui_rects"], 10, "the refusal")
+    st = app.wait(lambda s: "1000" in s["edit_error"] and "refusal" in s["ui_rects"], 10, "the refusal")
     st = app.settle()
     x0, y0, x1, y1 = map(int, st["ui_rects"]["refusal"])
     beside = (x0, y0, x1, y1)
