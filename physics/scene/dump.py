@@ -100,17 +100,18 @@ def spring_dict(world, sp, names) -> dict:
 
 def body_names(world, also=()) -> dict:
     """id -> name; bodies that springs or joints (or the ids in ``also``) refer to but that have
-    no name get a free ``bodyN``."""
+    no name get a free ``bodyN``, N the body's id (the sandbox shows an unnamed body by its id:
+    the saved name must be what the user saw)."""
     names = {b.id: b.name for b in world.bodies}
     taken = {n for n in names.values() if n is not None}
     links = list(world.springs) + list(world.joints)
     needed = {x.body_a.id for x in links} | {x.body_b.id for x in links if x.body_b is not None} | set(also)
-    for i, b in enumerate(world.bodies):
+    for b in world.bodies:
         if names[b.id] is None and b.id in needed:
-            name, k = f"body{i}", 0
+            name, k = f"body{b.id}", 0
             while name in taken:
                 k += 1
-                name = f"body{i}_{k}"
+                name = f"body{b.id}_{k}"
             names[b.id] = name
             taken.add(name)
     return names
