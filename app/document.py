@@ -57,17 +57,17 @@ class Document:
         self.path = Path(path) if path else None
         self.history = History()
         self.refs = Refs()
-        self.saved_edits = 0
+        self.saved_state = 0        # history.state() when last saved or loaded (-1: never clean)
         self.loaded = snapshot(world)
 
     @property
     def dirty(self) -> bool:
-        return self.history.edits != self.saved_edits
+        return self.history.state() != self.saved_state
 
     def mark_saved(self, path: Path):
         """After a save (the editor's colours already in ``world.metadata``, as the file has them)."""
         self.path = Path(path)
-        self.saved_edits = self.history.edits
+        self.saved_state = self.history.state()
         self.loaded = snapshot(self.world)
 
     @property

@@ -125,7 +125,7 @@ class SceneFiles:
             return
         self.editor.set_document(world, Path(origin) if origin else None)
         self.editor.doc.history.version += 1
-        self.editor.doc.history.edits += 1     # restored edits are unsaved
+        self.editor.doc.saved_state = -1       # restored edits are unsaved
         self.autosaver.discard(path)           # offered once: its edits are this session's now
         self.editor.notify("autosave restored (unsaved)")
 
