@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from test_saving import centre
-from test_tools import body, to_screen
+from test_tools import to_screen
 
 pytestmark = pytest.mark.app
 
