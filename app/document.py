@@ -58,10 +58,13 @@ class Document:
         self.history = History()
         self.refs = Refs()
         self.saved_state = 0        # history.state() when last saved or loaded (-1: never clean)
+        self.clean_at = None        # history.version at which a timeline scrub undid every edit
         self.loaded = snapshot(world)
 
     @property
     def dirty(self) -> bool:
+        if self.clean_at == self.history.version:
+            return False
         return self.history.state() != self.saved_state
 
     def mark_saved(self, path: Path):

@@ -44,6 +44,8 @@ class Timeline:
         self.cursor = None
         self.cleared = 0              # how many times an edit or reset cleared it (the status file shows it)
         self.held = False             # the topology differs only by a tool's joint (a click's mouse drag)
+        self.mark_of = None           # () -> what to remember with each snapshot (app.scrub_marks)
+        self.marks: dict = {}         # id(snapshot) -> its mark
         self._signature = None
 
     def __len__(self):
@@ -70,15 +72,17 @@ class Timeline:
             if not self.entries:      # the scene's size sets how many fit the budget
                 self.capacity = max(2, min(self.entries.maxlen, self.budget // max(1, nbytes(snap))))
             self.entries.append((t, snap))
+            if self.mark_of is not None:
+                self.marks[id(snap)] = self.mark_of()
             while len(self.entries) > self.capacity:
-                self.entries.popleft()
+                self.marks.pop(id(self.entries.popleft()[1]), None)
 
     def drop_future(self):
         """The world steps on from a scrubbed moment (played or single-stepped): the snapshots
         after it showed a future that no longer happens."""
         if self.cursor is not None:
             while len(self.entries) > self.cursor + 1:
-                self.entries.pop()
+                self.marks.pop(id(self.entries.pop()[1]), None)
             self.cursor = None
 
     def watch(self, world, signature, transient=False):
@@ -121,11 +125,16 @@ class Timeline:
         self.cursor = k
         return self.entries[k][0]
 
+    def mark_at_cursor(self):
+        """The mark of the snapshot the last scrub restored, or None."""
+        return None if self.cursor is None else self.marks.get(id(self.entries[self.cursor][1]))
+
     def clear(self):
         """Drop every snapshot (a topology edit, a reset, another document)."""
         if self.entries:
             self.cleared += 1
         self.entries.clear()
+        self.marks.clear()
         self.cursor = None
         self.held = False
 

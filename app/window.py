@@ -12,7 +12,7 @@ from imgui_bundle import imgui, implot
 from imgui_bundle.python_backends.pyglet_backend import create_renderer
 from OpenGL import GL
 
-from . import compile_units, framing
+from . import compile_units, framing, scrub_marks
 from .autosave import Autosaver
 from .bound import WorldBound
 from .bound_removal import remove_escapees
@@ -84,6 +84,7 @@ class Sandbox(pyglet.window.Window):
         self.warmup = Warmup(world, lock)
         self.sim = Simulation(self.editor, self.warmup, self.notices, paused=paused, lock=lock)
         self.timeline = Timeline()                # snapshots while playing: the timeline slider
+        self.timeline.mark_of = lambda: scrub_marks.mark(self.editor.doc)
         self.sim.after_step = self._after_step
         self.sensors = SensorView()               # sensor fixtures, drawn translucent and lit
         self.autosaver = Autosaver(interval=autosave_interval)
