@@ -14,6 +14,7 @@ from .plot_tab import probe_checkboxes
 from ..render.colors import PALETTE
 from .style import DIM, ENTER
 
+MAX_MASS = 1e9          # kg: beyond this the solvers' mass ratios break down long before
 # A refusal is shown beside its field (panels/refusal.py), not in the panel, so no field moves.
 # The number fields here and in the joint and fixture inspectors are doubles (input_double): a
 # float32 field turned a typed 1e30 into 1.0000000150474662e+30 in the refusal, and 1e300 into inf.
@@ -57,6 +58,16 @@ class InspectorSection(Section):
     def edit(self, item, field, value):
         self.app.editor.set_property(item, field, value)
 
+    def set_mass(self, b, kg):
+        """The body's mass through its density (mass = density x area): every fixture's density
+        scaled alike, so the mass is where it was within the body."""
+        ed = self.app.editor
+        if not (math.isfinite(kg) and 0 < kg <= MAX_MASS):
+            ed.refuse(f"mass: must be more than 0 and at most {MAX_MASS:g} kg (got {kg:g} kg)")
+            ed.notify(f"refused: {ed.edit_error}", error=True)
+            return
+        self.edit(b, "density", b.density * kg / b.mass)
+
     def body(self, b):
         imgui.text(f"Body {b.name or b.id}: {body_text(b)}")
         imgui.text_colored(DIM, f"mass {b.mass:.4g} kg   inertia {b.inertia:.4g}   {'awake' if b.awake else 'asleep'}")
@@ -85,6 +96,11 @@ class InspectorSection(Section):
         record(self.app, "inspector:density")
         if ch:
             self.edit(b, "density", v)
+        if b.mass > 0:        # a static or kinematic body has no mass to set
+            ch, v = imgui.input_double("mass (kg)", b.mass, 0.1, 1.0, "%.4g", ENTER)
+            record(self.app, "inspector:mass")
+            if ch:
+                self.set_mass(b, v)
         ch, v = imgui.input_double("restitution", b.restitution, 0.05, 0.2, "%.3f", ENTER)
         if ch:
             self.edit(b, "restitution", v)
