@@ -39,6 +39,8 @@ class WorldBound:
         self.enabled = True
         self.shown = True
         self._inside = np.zeros(0, np.int64)     # ids of moving bodies inside at the last check
+        # (ids, centres) of the moving bodies' pieces at the last check and the one before
+        self._last = self._before = (np.zeros(0, np.int64), np.zeros((0, 2)))
 
     def fit_scene(self, rd):
         """Set the bound from the scene's extent (on opening a scene, or the View panel's button)."""
@@ -66,11 +68,23 @@ class WorldBound:
 
     def inside_ids(self, rd) -> np.ndarray:
         moving = rd.kind != STATIC
+        self._last = (rd.ids[moving].astype(np.int64), rd.center[moving].copy())
         return rd.ids[moving & self.contains(rd.center)].astype(np.int64)
+
+    def way_back(self, body_id, rd) -> np.ndarray:
+        """How far (m) to move body ``body_id``, which ``crossed`` just found outside, back to
+        where it was at the check before, inside (an undo of its removal brings it back there:
+        outside, it would fall for ever); (0, 0) if it was not seen then."""
+        ids, centres = self._before
+        was, now = np.nonzero(ids == body_id)[0], np.nonzero(rd.ids == body_id)[0]
+        if not len(was) or not len(now):
+            return np.zeros(2)
+        return centres[was[0]] - rd.center[now[0]]
 
     def crossed(self, rd) -> np.ndarray:
         """Ids of moving bodies inside at the last check and outside now (their centre crossed
         the bound); remembers who is inside now for the next check."""
+        self._before = self._last           # where they were at the last check (way_back)
         inside = self.inside_ids(rd)
         out = np.zeros(0, np.int64)
         if self.enabled and len(self._inside):

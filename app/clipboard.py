@@ -8,6 +8,7 @@ import numpy as np
 import physics
 
 from .commands import SPRING_FIELDS, AddBody, AddJoint, AddSpring, Command, body_spec
+from .copy_names import copy_name, world_names
 from .joint_specs import joint_fields, moved_world_anchor
 
 NUDGE = np.array([0.6, -0.6])     # a paste where the originals are goes beside them, not on top
@@ -37,27 +38,40 @@ def copy_bodies(world, bodies, tool_springs=(), tool_joints=()):
 
 class Paste(Command):
     """Add the clipboard's bodies moved by ``offset`` (m) and their springs and joints (world
-    anchors moved too); names are dropped (they must stay unique)."""
+    anchors moved too); a named original gives a copy named "<name> copy" (names stay unique:
+    ``copy_names``), chosen at the first paste and kept by a redo."""
 
     def __init__(self, clip, offset, verb="paste"):
         off = np.asarray(offset, dtype=np.float64)
         self.adds = []
         for spec in clip["bodies"]:
-            spec = dict(spec, name=None, position=tuple(np.asarray(spec["position"]) + off))
+            spec = dict(spec, position=tuple(np.asarray(spec["position"]) + off))
             self.adds.append(AddBody(spec, verb))
         self.spring_specs = []
         for ia, ib, fields in clip["springs"]:
-            f = dict(fields, name=None)
+            f = dict(fields)
             if ib is None:
                 f["anchor_b"] = tuple(np.asarray(f["anchor_b"]) + off)
             self.spring_specs.append((ia, ib, f))
-        self.joint_specs = [(kind, ia, ib, dict(moved_world_anchor(kind, f, off) if ib is None else f, name=None))
+        self.joint_specs = [(kind, ia, ib, dict(moved_world_anchor(kind, f, off) if ib is None else f))
                             for kind, ia, ib, f in clip.get("joints", ())]
+        self.named = False
         self.spring_cmds = None
         self.joint_cmds = None
         self.label = f"{verb} {len(self.adds)} bod{'y' if len(self.adds) == 1 else 'ies'}"
 
+    def name_copies(self, world):
+        """Free names for the copies (once: a redo makes the same ones again)."""
+        taken = world_names(world)
+        for c in self.adds:
+            c.spec["name"] = copy_name(c.spec.get("name"), taken)
+        for _, _, f in self.spring_specs + [(a, b, f) for _, a, b, f in self.joint_specs]:
+            f["name"] = copy_name(f.get("name"), taken)
+        self.named = True
+
     def do(self, app):
+        if not self.named:
+            self.name_copies(app.world)
         for c in self.adds:
             c.do(app)
         if self.spring_cmds is None:

@@ -73,6 +73,10 @@ def make_spring(world, spec: dict):
 
 class Command:
     label = ""
+    #: made by the sandbox itself (the world bound's removals), not by the user: it can be undone,
+    #: but it does not make the document unsaved
+    automatic = False
+    stamp = 0          # set by History when recorded (which edit the document is at)
 
     def do(self, app) -> None:
         raise NotImplementedError
@@ -314,18 +318,21 @@ class History:
         self.done: list[Command] = []
         self.undone: list[Command] = []
         self.limit = limit
-        self.version = 0   # bumps on every change; the document is clean at `saved_version`
+        self.version = 0   # bumps on every change (caches and the timeline watch it)
+        self._stamps = 0   # each user's edit (and each merge into one) gets a new stamp
 
     def execute(self, app, cmd: Command) -> None:
         """Run a command and record it; a ValueError from the core leaves nothing recorded."""
         cmd.do(app)
         self.undone.clear()
         if self.done and self.done[-1].merge(cmd):
-            pass
+            cmd = self.done[-1]          # its content changed: a new stamp below
         else:
             self.done.append(cmd)
             if len(self.done) > self.limit:
                 self.done.pop(0)
+        self._stamps += 1
+        cmd.stamp = self._stamps
         self.version += 1
 
     def undo(self, app) -> str | None:
@@ -345,6 +352,12 @@ class History:
         self.done.append(cmd)
         self.version += 1
         return cmd.label
+
+    def state(self) -> int:
+        """Which of the user's edits the document is at: the stamp of the newest one not undone
+        (0: none).  Undo back to a saved state makes it clean again; the sandbox's own edits
+        (``automatic``) do not count."""
+        return next((c.stamp for c in reversed(self.done) if not c.automatic), 0)
 
     def clear(self):
         self.done.clear()

@@ -115,9 +115,12 @@ class Comparison:
         self.restart()
 
     def stop(self):
+        split = self.active and self.view == "split"
         self.active = False
         self.lanes = []
         self._key = None
+        if split:         # split view framed the scene in its left column: the whole free area again
+            self.app.fit()
 
     def restart(self):
         """Clone the rivals from the main world's current state; the samples start again."""

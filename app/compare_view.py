@@ -1,6 +1,7 @@
-"""Drawing a comparison: the rivals as ghost outlines over the scene, or split view (the main
-world in the left half of the free area, the first rival in the right half, the same region of
-the world in both, the camera shared so tools and panning work in the left pane as usual)."""
+"""Drawing a comparison: the rivals as ghost outlines over the scene, or split view (the free area
+in equal columns, the main world in the left one and each rival in one of its own, the same
+region of the world in every column, the camera shared so tools and panning work in the left
+pane as usual)."""
 from __future__ import annotations
 
 import numpy as np
@@ -36,10 +37,12 @@ class CompareView:
         return cmp.active and cmp.view == "split" and bool(cmp.lanes)
 
     def panes(self):
-        """(left, right) window rectangles (y down) of split view: the free area's halves."""
+        """Window rectangles (y down) of split view, left to right: the main world's and one per
+        rival, the free area in equal columns."""
         x0, y0, x1, y1 = self.app.free_rect()
-        xm = 0.5 * (x0 + x1)
-        return (x0, y0, xm, y1), (xm, y0, x1, y1)
+        n = 1 + max(1, len(self.app.compare.lanes))
+        w = (x1 - x0) / n
+        return [(x0 + k * w, y0, x0 + (k + 1) * w, y1) for k in range(n)]
 
     def build(self):
         """Upload every rival's bodies (ghost outlines, or solid in split view's right pane)."""
@@ -49,7 +52,7 @@ class CompareView:
             self.layers.append(LaneLayers(self.app.renderer))
         split = self.split()
         for k, layer in enumerate(self.layers):
-            if k < len(lanes) and (not split or k == 0):
+            if k < len(lanes):
                 layer.build(lanes[k].world.render_data(), lanes[k].color, solid=split, scale=self.app.camera.scale)
             else:
                 layer.clear()
@@ -61,25 +64,26 @@ class CompareView:
             extra = [lay for layer in self.layers for lay in layer.layers]
             r.draw(app.camera, fw, fh, extra=extra)
             return
-        left, right = self.panes()
-        sx, sy = fw / max(1, app.width), fh / max(1, app.height)
-        xm = right[0]
-        # the main world left of the divider (under the side panel too), the rival right of it
-        r.draw(app.camera, fw, fh, scissor=(0, 0, xm * sx, fh))
-        cam = Camera(app.camera.width, app.camera.height, app.camera.center, app.camera.scale)
-        cam.center = app.camera.center - np.array([(right[0] - left[0]) / cam.scale, 0.0])
-        r.draw(cam, fw, fh, extra=self.layers[0].layers, scissor=(xm * sx, 0, fw - xm * sx, fh), scene=False)
+        panes = self.panes()
+        left = panes[0]
+        sx = fw / max(1, app.width)
+        # the main world left of the first divider (under the side panel too), each rival in its column
+        r.draw(app.camera, fw, fh, scissor=(0, 0, panes[1][0] * sx, fh))
+        for k, pane in enumerate(panes[1:]):
+            cam = Camera(app.camera.width, app.camera.height, app.camera.center, app.camera.scale)
+            cam.center = app.camera.center - np.array([(pane[0] - left[0]) / cam.scale, 0.0])
+            x0, x1 = pane[0] * sx, (fw if k == len(panes) - 2 else pane[2] * sx)
+            r.draw(cam, fw, fh, extra=self.layers[k].layers, scissor=(x0, 0, x1 - x0, fh), scene=False)
 
     def labels(self):
         """The panes' names and the divider (imgui's background list: the panels stay above)."""
         if not self.split():
             return
         app = self.app
-        left, right = self.panes()
+        panes = self.panes()
         dl = imgui.get_background_draw_list()
-        dl.add_line(imgui.ImVec2(right[0], right[1]), imgui.ImVec2(right[0], right[3]),
-                    imgui.get_color_u32(imgui.ImVec4(*DIVIDER)), 2.0)
-        lane = app.compare.lanes[0]
-        for (x0, y0, _, _), text, col in ((left, f"main: {app.world.solver}", LANE_COLORS[0]),
-                                          (right, lane.label, lane.color)):
+        for x0, y0, _, y1 in panes[1:]:
+            dl.add_line(imgui.ImVec2(x0, y0), imgui.ImVec2(x0, y1), imgui.get_color_u32(imgui.ImVec4(*DIVIDER)), 2.0)
+        names = [(f"main: {app.world.solver}", LANE_COLORS[0])] + [(ln.label, ln.color) for ln in app.compare.lanes]
+        for (x0, y0, _, _), (text, col) in zip(panes, names):
             dl.add_text(imgui.ImVec2(x0 + 10, y0 + 8), imgui.get_color_u32(imgui.ImVec4(*col)), text)

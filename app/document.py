@@ -57,17 +57,20 @@ class Document:
         self.path = Path(path) if path else None
         self.history = History()
         self.refs = Refs()
-        self.saved_version = 0
+        self.saved_state = 0        # history.state() when last saved or loaded (-1: never clean)
+        self.clean_at = None        # history.version at which a timeline scrub undid every edit
         self.loaded = snapshot(world)
 
     @property
     def dirty(self) -> bool:
-        return self.history.version != self.saved_version
+        if self.clean_at == self.history.version:
+            return False
+        return self.history.state() != self.saved_state
 
     def mark_saved(self, path: Path):
         """After a save (the editor's colours already in ``world.metadata``, as the file has them)."""
         self.path = Path(path)
-        self.saved_version = self.history.version
+        self.saved_state = self.history.state()
         self.loaded = snapshot(self.world)
 
     @property

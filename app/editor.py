@@ -56,10 +56,13 @@ class Editor:
         self.follow = None                     # Ref of the body the camera follows (L), or None
         self.tracers = Tracers()               # trails behind points of bodies (tracer tool, context menu)
         self.lasers = Lasers()                 # the laser tool's emitters and their beams
+        self.tracers.from_metadata(world, self.doc.refs)      # those the scene file has
+        self.lasers.from_metadata(world, self.doc.refs)
         self.tools = {cls.name: cls(self) for cls in TOOLS}
         self.tool_names = [cls.name for cls in TOOLS]
         self.tool = self.tools["select"]
-        self.edit_error = ""                   # the last refused edit, shown in the inspector
+        self.edit_error = ""                   # the last refused edit, shown beside its field
+        self.on_refusal: list = []             # called on a refusal (the panels note which field)
         self._hint = None                      # (text, world point, time, error) shown at the pointer
         self.on_document: list = []
         self.on_mode: list = []
@@ -101,6 +104,7 @@ class Editor:
         self.selection = []
         self.hovered = None
         self.follow = None
+        self.edit_error = ""           # a refusal in the last scene says nothing about this one
         self.doc = Document(world, path)
         self.colors = from_metadata(world, self.doc.refs)   # the file's colours (a reset's too)
         self.tracers.reset(world, self.doc.refs, keep=keep_camera)   # a reset clears the trails
@@ -131,7 +135,7 @@ class Editor:
             self.edit_error = ""
             return True
         except (ValueError, KeyError) as exc:
-            self.edit_error = str(exc)
+            self.refuse(str(exc))
             self.notify(f"refused: {exc}", error=True)
             return False
 
@@ -146,9 +150,14 @@ class Editor:
             self.edit_error = ""
             return True
         except ValueError as exc:
-            self.edit_error = f"refused: {exc}"
+            self.refuse(f"refused: {exc}")
             self.notify(f"{label} {self.edit_error}", error=True)
             return False
+
+    def refuse(self, text):
+        self.edit_error = text
+        for cb in self.on_refusal:
+            cb()
 
     def drop_shape(self, name, p):
         """A palette button dropped at world point ``p``: the tool's default body there."""
@@ -263,7 +272,7 @@ class Editor:
         """The step rate in Hz (dt = 1/hz), within STEP_RATE; out of range is refused with a message."""
         lo, hi = STEP_RATE
         if not (isinstance(hz, (int, float)) and lo <= hz <= hi):
-            self.edit_error = f"step rate must be between {lo:g} and {hi:g} Hz (got {hz:g} Hz)"
+            self.refuse(f"step rate must be between {lo:g} and {hi:g} Hz (got {hz:g} Hz)")
             self.notify(f"refused: {self.edit_error}", error=True)
             return False
         w = self.world
@@ -325,9 +334,12 @@ class Editor:
         if rgb != self.colors.get(self.refs.of(body)):
             self.execute(SetColor(self, body, rgb))
 
-    def sync_colors(self):
-        """Before a save: the colours go where the scene saver reads them (world.metadata)."""
+    def sync_app_data(self):
+        """Before a save: the colours, lasers and tracers go where the scene saver reads them
+        (world.metadata)."""
         to_metadata(self.world, self.colors)
+        self.lasers.to_metadata(self.world)
+        self.tracers.to_metadata(self.world)
 
     def color_of(self, body):
         return self.colors.get(self.refs.of(body))

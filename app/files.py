@@ -76,7 +76,7 @@ class SceneFiles:
         ed.tools["select"].end_joint()
         try:
             target.parent.mkdir(parents=True, exist_ok=True)
-            ed.sync_colors()
+            ed.sync_app_data()
             ed.world.save_scene(str(target))
         except Exception as exc:  # noqa: BLE001
             ed.notify(f"save failed: {exc}", error=True)
@@ -93,15 +93,21 @@ class SceneFiles:
         return True
 
     def request_reset(self):
-        self.confirm_unsaved("Reset to the loaded state?", self.reset)
+        """Reset, asking first about unsaved edits.  What to reset to is taken now: "Save, then
+        continue" saves the edits (a shipped scene to a copy in the user's folder), and the reset
+        must still go back to the scene as it was loaded, not to the copy just saved."""
+        doc = self.editor.doc
+        loaded, path = doc.loaded, doc.path
+        self.confirm_unsaved("Reset to the loaded state?", lambda: self.reset(loaded, path))
 
-    def reset(self):
+    def reset(self, loaded=None, path=None):
         """Back to the loaded state (as the file has it, bodies' colours too: the document is then
         clean), keeping the solver choice (the Solver panel: mode, every mode's settings,
-        integrator, broad and narrow phase, sleeping) and the view."""
+        integrator, broad and narrow phase, sleeping) and the view.  ``loaded``/``path``: the
+        state to go back to and its file (default: the document's)."""
         ed = self.editor
-        loaded = ed.doc.loaded
-        path = ed.doc.path
+        if loaded is None:
+            loaded, path = ed.doc.loaded, ed.doc.path
         ed.tool.cancel()
         old = ed.world
         meta = {k: v for k, v in old.metadata.items() if k != "colors"}   # colours: the file's (in loaded)
@@ -118,7 +124,8 @@ class SceneFiles:
             self.errors = ["autosave:"] + format_scene_error(exc)
             return
         self.editor.set_document(world, Path(origin) if origin else None)
-        self.editor.doc.history.version += 1   # restored edits are unsaved
+        self.editor.doc.history.version += 1
+        self.editor.doc.saved_state = -1       # restored edits are unsaved
         self.autosaver.discard(path)           # offered once: its edits are this session's now
         self.editor.notify("autosave restored (unsaved)")
 

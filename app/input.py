@@ -9,6 +9,7 @@ import pyglet
 from imgui_bundle import imgui
 from pyglet.window import key, mouse
 
+from .picking import body_at
 from .shortcuts import handle_key
 
 MODIFIER_KEYS = {key.LSHIFT, key.RSHIFT, key.LCTRL, key.RCTRL, key.LALT, key.RALT, key.LMETA, key.RMETA,
@@ -25,11 +26,13 @@ class SceneInput:
         self.tool_active = False
         # keyboard focus: shortcuts fire only while the scene has it.  A press on a panel takes it
         # (keys typed into a field that has not or no longer has the keyboard must not act on the
-        # scene); a press in the scene, Esc, or moving the pointer into the scene once no text
-        # field is active gives it back; a press on a panel that activated no text field too.
+        # scene); a press in the scene, Esc, moving the pointer into the scene once no text field
+        # is active, or a field let go from the keyboard (Enter) with its value taken gives it
+        # back; a press on a panel that activated no text field too.
         self.scene_keys = True
         self._panel_press_frame = None
         self._text_used = False
+        self._typing = False       # a text field had the keyboard in the last frame
 
     @property
     def editor(self):
@@ -61,7 +64,7 @@ class SceneInput:
             ed.hovered = None
             return
         try:
-            ed.hovered = ed.world.query_point(tuple(ed.cursor))
+            ed.hovered = body_at(ed.world, tuple(ed.cursor))
         except ValueError:
             ed.hovered = None
 
@@ -69,9 +72,15 @@ class SceneInput:
     def after_frame(self):
         """Follow the panels' keyboard use (called once per frame after the UI is drawn)."""
         io = imgui.get_io()
+        typing, self._typing = self._typing, io.want_text_input
         if io.want_text_input:
             self.scene_keys = False
             self._text_used = True
+        elif typing and not imgui.is_any_mouse_down() and not self.editor.edit_error:
+            # the field let go from the keyboard (Enter, Tab, Esc) with its value taken: Space
+            # pauses again; after a refusal the keys stay away from the scene (typing on to
+            # correct the value must not fire shortcuts)
+            self._take_keys()
         elif (not self.scene_keys and not self._text_used and self._panel_press_frame is not None
               and self.app.frame_no > self._panel_press_frame + 1):
             self.scene_keys = True          # the press on the panel was a button, not a text field
@@ -128,7 +137,7 @@ class SceneInput:
     def context_menu(self):
         """A right click without a drag on a body: its context menu (nothing on empty space)."""
         try:
-            b = self.editor.world.query_point(tuple(self.editor.cursor))
+            b = body_at(self.editor.world, tuple(self.editor.cursor))
         except ValueError:
             return
         if b is not None:

@@ -3,8 +3,8 @@ frame to the first fixture it meets and mirrored off it (about the hit normal) f
 ``MAX_SEGMENTS`` segments, as Algodoo's laser.  The lasers belong to the editing session's
 document: the laser tool's edits are undoable commands (``app.laser_commands``); a reset keeps
 them (an emitter on a body follows the body at its place in the reset world), opening another
-scene drops them.  The scene format has no app-only section (any unknown top-level key is an
-error, docs/scene-format.md), so lasers are not saved in scene files."""
+scene brings that scene's.  They are saved in the scene file's ``sandbox`` section, which the
+loader leaves in ``world.metadata["lasers"]`` (docs/scene-format.md)."""
 from __future__ import annotations
 
 import math
@@ -129,13 +129,31 @@ class Lasers:
 
     def reset(self, world, refs, keep=True):
         """A reset (``keep``): each laser on a body follows the body at its place in the new world
-        (fixed lasers stay).  A new document (not ``keep``): no lasers."""
+        (fixed lasers stay).  A new document (not ``keep``): the lasers its file has."""
         if not keep:
-            self.items = []
+            self.from_metadata(world, refs)
             return
         for lz in self.items:
             if lz.ref is not None and lz.index is not None and lz.index < len(world.bodies):
                 lz.ref = refs.of(world.bodies[lz.index])
+
+    def to_metadata(self, world):
+        """Put the lasers where the scene saver reads them (those on deleted bodies are left out)."""
+        out = [{"body": None if lz.ref is None else lz.body().id, "point": lz.local, "angle": lz.angle}
+               for lz in self.items if lz.shown]
+        if out:
+            world.metadata["lasers"] = out
+        else:
+            world.metadata.pop("lasers", None)
+
+    def from_metadata(self, world, refs):
+        """The lasers of a scene as loaded (``world.metadata["lasers"]``, by body id)."""
+        place = {b.id: (k, b) for k, b in enumerate(world.bodies)}
+        self.items = []
+        for it in world.metadata.get("lasers", []):
+            k, b = place.get(it["body"], (None, None))
+            if it["body"] is None or b is not None:
+                self.items.append(Laser(None if b is None else refs.of(b), it["point"], it["angle"], k))
 
     def decorate(self, decor, selected=None, width=2.0):
         """The beams as segments and the emitters as points (``selected`` drawn larger)."""

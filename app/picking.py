@@ -1,12 +1,15 @@
 """What lies under the pointer: every body at a point (topmost first), and the joint nearest to it.
 
-``World.query_point`` answers only the topmost body; the joint tools need the two topmost (a hinge
-joins them), so ``bodies_at`` tests every body's drawn shape from the render data (the same
-vertices the renderer fills: what is seen is what is picked).
+Every tool picks bodies through ``bodies_at`` (``body_at``: the topmost), so select, spring and
+the joint tools agree: it tests every fixture of every body (each piece of a compound or of a
+decomposed concave outline, capsules and rounded polygons out to their radius, either winding)
+from the render data, the vertices the renderer fills: what is seen is what is picked.
 """
 from __future__ import annotations
 
 import numpy as np
+
+from physics.store.fixtures import CIRCLE
 
 from .render.joints import joint_segments
 
@@ -15,26 +18,50 @@ PIN_PX = 8.0
 LINE_PX = 6.0
 
 
+def _inside_piece(p, v, r) -> bool:
+    """Is ``p`` inside the convex piece with vertices ``v`` (either winding; 1 or 2 vertices:
+    a point or a segment) grown by radius ``r``?"""
+    k = len(v)
+    if k >= 3:
+        e = np.roll(v, -1, axis=0) - v
+        cross = e[:, 0] * (p[1] - v[:, 1]) - e[:, 1] * (p[0] - v[:, 0])
+        if np.all(cross >= 0) or np.all(cross <= 0):
+            return True
+    if r <= 0.0:
+        return False
+    a, b = (v, np.roll(v, -1, axis=0)) if k > 1 else (v, v)
+    return bool(np.min(_segment_distance(p, a, b)) <= r)
+
+
 def bodies_at(world, p, rd=None) -> list:
-    """Every body whose shape contains world point ``p``, topmost (last added) first."""
+    """Every body one of whose fixtures contains world point ``p``, topmost (last added) first."""
     rd = world.render_data() if rd is None else rd
     p = np.asarray(p, dtype=np.float64)
     box = rd.aabb
-    cand = np.nonzero((box[:, 0] <= p[0]) & (p[0] <= box[:, 2]) & (box[:, 1] <= p[1]) & (p[1] <= box[:, 3]))[0]
-    handles = {b.id: b for b in world.bodies}
-    out = []
-    for s in cand[::-1]:
-        k = int(rd.vcount[s])
-        if k == 0:
-            inside = np.hypot(*(p - rd.center[s])) <= rd.radius[s]
+    slots = set(np.nonzero((box[:, 0] <= p[0]) & (p[0] <= box[:, 2]) & (box[:, 1] <= p[1]) & (p[1] <= box[:, 3]))[0])
+    if not slots:
+        return []
+    fx = rd.fixtures
+    hit = set()
+    for f in np.nonzero(np.isin(fx["body"], list(slots)))[0]:
+        s, r = int(fx["body"][f]), float(fx["radius"][f])
+        if s in hit:
+            continue
+        if fx["shape"][f] == CIRCLE:
+            inside = np.hypot(*(p - fx["center"][f])) <= r
         else:
-            v = rd.vertices[int(rd.vstart[s]):int(rd.vstart[s]) + k]
-            e = np.roll(v, -1, axis=0) - v
-            # counter-clockwise convex polygon: p is left of (or on) every edge
-            inside = np.all(e[:, 0] * (p[1] - v[:, 1]) - e[:, 1] * (p[0] - v[:, 0]) >= 0)
+            a = int(fx["vstart"][f])
+            inside = _inside_piece(p, rd.vertices[a:a + int(fx["vcount"][f])], r)
         if inside:
-            out.append(handles[int(rd.ids[s])])
-    return out
+            hit.add(s)
+    handles = {b.id: b for b in world.bodies}
+    return [handles[int(rd.ids[s])] for s in sorted(hit, reverse=True)]
+
+
+def body_at(world, p, rd=None):
+    """The topmost body at world point ``p``, or None."""
+    under = bodies_at(world, p, rd)
+    return under[0] if under else None
 
 
 def _segment_distance(p, a, b):

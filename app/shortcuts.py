@@ -31,7 +31,12 @@ def _toggle_ui(app, shift):
     app.show_ui = not app.show_ui
 
 
+def _quit(app, shift):
+    app.on_close()           # as the window's close button: unsaved edits are asked about first
+
+
 SHORTCUTS = (
+    (K.Q, True, _quit),
     (K.Z, True, lambda app, shift: app.editor.redo() if shift else app.editor.undo()),
     (K.Y, True, lambda app, shift: app.editor.redo()),
     (K.S, True, lambda app, shift: app.panels.focus_save_as() if shift else app.files.save()),

@@ -3,8 +3,9 @@
 Scrubbing restores the snapshot at or before the chosen time (``world.restore``: bit-identical
 continuation); stepping on from a scrubbed moment discards the snapshots after it.  The core
 restores only into a world with the same bodies, fixtures, springs and joints, so an edit that
-changes the topology (add, delete, the mouse drag's joint) clears the timeline; so does a reset
-or another document.  Cost for a 1000-body scene: docs/sandbox.md, "Timeline"."""
+changes the topology (add, delete) clears the timeline; so does a reset or another document.  A
+drag holds the mouse joint only while the button is down: no snapshot is taken then, and the
+snapshots before and after it stay (a throw can be rewound).  Cost for a 1000-body scene: docs/sandbox.md, "Timeline"."""
 from __future__ import annotations
 
 from collections import deque
@@ -43,6 +44,8 @@ class Timeline:
         self.cursor = None
         self.cleared = 0              # how many times an edit or reset cleared it (the status file shows it)
         self.held = False             # the topology differs only by a tool's joint (a click's mouse drag)
+        self.mark_of = None           # () -> what to remember with each snapshot (app.scrub_marks)
+        self.marks: dict = {}         # id(snapshot) -> its mark
         self._signature = None
 
     def __len__(self):
@@ -60,28 +63,35 @@ class Timeline:
         exact multiples of the interval's steps).  If the world steps on from a scrubbed moment,
         the snapshots after it go first; then a snapshot if ``interval`` has passed since the
         newest one (half a step early, so float sums of dt do not skip one)."""
-        if self.held:                 # stepping with the mouse drag's joint: the old snapshots no longer fit
-            self.clear()
-        if self.cursor is not None:
-            while len(self.entries) > self.cursor + 1:
-                self.entries.pop()
-            self.cursor = None
+        self.drop_future()
+        if self.held:     # the mouse drag's joint is no edit: the drag is a gap between snapshots
+            return
         t = world.time
         if not self.entries or t >= self.entries[-1][0] + self.interval - 0.5 * world.dt:
             snap = world.snapshot()
             if not self.entries:      # the scene's size sets how many fit the budget
                 self.capacity = max(2, min(self.entries.maxlen, self.budget // max(1, nbytes(snap))))
             self.entries.append((t, snap))
+            if self.mark_of is not None:
+                self.marks[id(snap)] = self.mark_of()
             while len(self.entries) > self.capacity:
-                self.entries.popleft()
+                self.marks.pop(id(self.entries.popleft()[1]), None)
+
+    def drop_future(self):
+        """The world steps on from a scrubbed moment (played or single-stepped): the snapshots
+        after it showed a future that no longer happens."""
+        if self.cursor is not None:
+            while len(self.entries) > self.cursor + 1:
+                self.marks.pop(id(self.entries.pop()[1]), None)
+            self.cursor = None
 
     def watch(self, world, signature, transient=False):
         """Clear the timeline if the world's topology changed.  ``signature`` is anything that
         changes with every edit (history version, counts of bodies and joints): only then are the
         world's ids compared with the newest snapshot's.  ``transient``: a tool's joint exists
-        (a click on a dynamic body holds a mouse joint until release), which is no edit: the
-        timeline is only held (no scrubbing) until the joint goes, or cleared if the world steps
-        with it.  Returns True if it cleared."""
+        (a drag holds a mouse joint until release), which is no edit: the timeline is only held
+        (no scrubbing, no snapshots) until the joint goes, and the drag or throw stays on it as
+        the steps between two snapshots.  Returns True if it cleared."""
         if signature == self._signature:
             return False
         self._signature = signature
@@ -115,11 +125,16 @@ class Timeline:
         self.cursor = k
         return self.entries[k][0]
 
+    def mark_at_cursor(self):
+        """The mark of the snapshot the last scrub restored, or None."""
+        return None if self.cursor is None else self.marks.get(id(self.entries[self.cursor][1]))
+
     def clear(self):
         """Drop every snapshot (a topology edit, a reset, another document)."""
         if self.entries:
             self.cleared += 1
         self.entries.clear()
+        self.marks.clear()
         self.cursor = None
         self.held = False
 

@@ -1,6 +1,7 @@
 """Tracers: a trail behind a point of a body, the last ``seconds`` of world time of where that
 point went, drawn as a line fading towards its oldest end.  Trails are cleared on reset (the
-tracers then follow the reset world's bodies); a new document drops the tracers."""
+tracers then follow the reset world's bodies); a new document brings the tracers its file has
+(the scene's ``sandbox`` section, left by the loader in ``world.metadata["tracers"]``)."""
 from __future__ import annotations
 
 import numpy as np
@@ -85,15 +86,34 @@ class Tracers:
 
     def reset(self, world, refs, keep=True):
         """A reset (``keep``): trails cleared, each tracer follows the body at its place in the
-        new world.  A new document (not ``keep``): no tracers."""
+        new world.  A new document (not ``keep``): the tracers its file has."""
         self._last_time = None
         if not keep:
-            self.items = []
+            self.from_metadata(world, refs)
             return
         for tr in self.items:
             tr.clear()
             if tr.index < len(world.bodies):
                 tr.ref = refs.of(world.bodies[tr.index])
+
+    def to_metadata(self, world):
+        """Put the tracers where the scene saver reads them (those of deleted bodies are left out)."""
+        out = [{"body": tr.ref.obj.id, "point": tr.local} for tr in self.items
+               if tr.ref.obj is not None and tr.ref.obj.alive]
+        if out:
+            world.metadata["tracers"] = out
+        else:
+            world.metadata.pop("tracers", None)
+
+    def from_metadata(self, world, refs):
+        """The tracers of a scene as loaded (``world.metadata["tracers"]``, by body id)."""
+        place = {b.id: (k, b) for k, b in enumerate(world.bodies)}
+        self.items = []
+        for it in world.metadata.get("tracers", []):
+            if it["body"] in place:
+                k, b = place[it["body"]]
+                color = TRAIL_COLORS[len(self.items) % len(TRAIL_COLORS)]
+                self.items.append(Tracer(refs.of(b), it["point"], color, k))
 
     def segments(self):
         """Every trail as line segments (p0 (K, 2), p1 (K, 2), rgba (K, 4)), alpha fading from

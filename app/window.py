@@ -12,11 +12,11 @@ from imgui_bundle import imgui, implot
 from imgui_bundle.python_backends.pyglet_backend import create_renderer
 from OpenGL import GL
 
-from . import compile_units, framing
+from . import compile_units, framing, scrub_marks
 from .autosave import Autosaver
 from .bound import WorldBound
+from .bound_removal import remove_escapees
 from .camera import Camera
-from .commands import RemoveBodies
 from .compare import Comparison
 from .compare_view import CompareView
 from .editor import Editor
@@ -84,6 +84,7 @@ class Sandbox(pyglet.window.Window):
         self.warmup = Warmup(world, lock)
         self.sim = Simulation(self.editor, self.warmup, self.notices, paused=paused, lock=lock)
         self.timeline = Timeline()                # snapshots while playing: the timeline slider
+        self.timeline.mark_of = lambda: scrub_marks.mark(self.editor.doc)
         self.sim.after_step = self._after_step
         self.sensors = SensorView()               # sensor fixtures, drawn translucent and lit
         self.autosaver = Autosaver(interval=autosave_interval)
@@ -203,7 +204,7 @@ class Sandbox(pyglet.window.Window):
         self.times.record(real_dt, physics=phys_ms, upload=upload_ms, draw=draw_ms, ui=ui_ms,
                           frame=(time.perf_counter() - t_start) * 1e3, plot=self.panels.plot.ms)
         if ready:
-            self.editor.sync_colors()     # the autosave keeps the bodies' colours too
+            self.editor.sync_app_data()     # the autosave keeps colours, lasers and tracers too
             self.autosaver.tick(self.editor.doc, busy=self.editor.tools["select"].joint is not None)
         self._update_caption()
         if self.frame_no == 1:
@@ -223,6 +224,8 @@ class Sandbox(pyglet.window.Window):
     def _after_step(self, world):
         if self.sim.running:       # a single step (S) from a paused moment does not record
             self.timeline.record(world)
+        else:                      # but it is the new future of a scrubbed moment
+            self.timeline.drop_future()
         self.panels.stats.contacts.rate.on_step(world)   # the selected body's hits (stats readout)
 
     def preview_scene(self) -> float:
@@ -252,20 +255,10 @@ class Sandbox(pyglet.window.Window):
         self._scene_pending = None
 
     def check_bound(self):
-        """Remove the moving bodies that crossed the world bound this frame (one undoable edit);
-        returns the render data to draw."""
+        """Remove the moving bodies that crossed the world bound this frame; returns the render
+        data to draw."""
         rd = self.world.render_data()
-        gone = set(self.bound.crossed(rd).tolist())
-        if not gone:
-            return rd
-        bodies = [b for b in self.world.bodies if b.id in gone]
-        cmd = RemoveBodies(self.editor, bodies)
-        cmd.label = f"remove {len(bodies)} bodies that left the world bound"
-        self.editor.execute(cmd)
-        n = len(bodies)
-        self.notices.notify(f"{n} bod{'y' if n == 1 else 'ies'} left the world bound and "
-                            f"{'was' if n == 1 else 'were'} removed (Ctrl+Z brings {'it' if n == 1 else 'them'} back)")
-        return self.world.render_data()
+        return self.world.render_data() if remove_escapees(self, rd) else rd
 
     def follow_camera(self):
         """Keep the followed body (L) at the middle of the free area."""

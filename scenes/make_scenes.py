@@ -211,6 +211,8 @@ def chain_bridge():
 
 def soft_body():
     bodies, springs = [ground(30.0)], []
+    # walls at the ground's ends: a blob that rolls off the edge would fall out of the world bound
+    bodies += [static(box(1.0, 4.0), sx * 14.5, 2.0, f"wall_{side}") for sx, side in ((-1, "left"), (1, "right"))]
     bodies.append(static(poly([(-1.5, 0.0), (1.5, 0.0), (0.0, 1.2)]), 1.0, 0.0, "wedge"))
     nx = ny = 5
     gap, rad = 0.4, 0.15
@@ -229,7 +231,7 @@ def soft_body():
                     if 0 <= ii < nx and 0 <= jj < ny:
                         springs.append(spring(nm(b, i, j), nm(b, ii, jj), [0, 0], [0, 0], 30.0, 0.1))
     return scene("Soft body", "Two blobs of 25 small discs each, tied to their neighbours by springs "
-                              "(structural and shear, 30 N/m), dropping onto a wedge and the ground.",
+                              "(structural and shear, 30 N/m), dropping onto a wedge and the ground between two walls.",
                  bodies, springs, camera={"center": [-1.0, 3.0], "zoom": 55.0})
 
 

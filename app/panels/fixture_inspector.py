@@ -102,7 +102,7 @@ def fixture_list(section, b) -> int:
 
 def fixture_fields(app, b, i, f):
     def num(label, field, value, step):
-        ch, v = imgui.input_float(f"{label}##fx{i}", value, step, 10 * step, "%.3f", ENTER)
+        ch, v = imgui.input_double(f"{label}##fx{i}", value, step, 10 * step, "%.3f", ENTER)
         record(app, f"inspector:fixture:{i}:{field}")
         if ch:
             set_fixture(app, b, i, field, v)

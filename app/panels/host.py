@@ -12,6 +12,7 @@ from .hits import PanelHits
 from .inspector import InspectorSection
 from .plot_tab import PlotTab
 from .notes import cursor_hint, messages, progress_window
+from .refusal import RefusalBubble
 from .scene import SceneSection
 from .simulation import SimulationSection
 from .solver import SolverSection
@@ -40,6 +41,7 @@ class Panels:
         self.plot = PlotTab(app)
         self.context = ContextMenu(app)
         self.dialogs = Dialogs(app)
+        self.refusal = RefusalBubble(app)      # a refused field's message, beside the field
         self.show_stats = True
 
     def ask(self, title, lines, buttons):
@@ -74,6 +76,7 @@ class Panels:
             self.stats.draw()
         messages(app)
         cursor_hint(app)
+        self.refusal.draw()
         self.dialogs.draw()
         self.context.draw()
         self.tools.drop()

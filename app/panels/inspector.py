@@ -12,7 +12,12 @@ from .fixture_inspector import body_text, draw_fixtures
 from .joint_inspector import draw_joint
 from .plot_tab import probe_checkboxes
 from ..render.colors import PALETTE
-from .style import DIM, ENTER, RED
+from .style import DIM, ENTER
+
+MAX_MASS = 1e9          # kg: beyond this the solvers' mass ratios break down long before
+# A refusal is shown beside its field (panels/refusal.py), not in the panel, so no field moves.
+# The number fields here and in the joint and fixture inspectors are doubles (input_double): a
+# float32 field turned a typed 1e30 into 1.0000000150474662e+30 in the refusal, and 1e300 into inf.
 
 
 def wrap_degrees(deg: float) -> float:
@@ -50,22 +55,22 @@ class InspectorSection(Section):
             if imgui.button("Static/Dynamic (T)"):
                 ed.toggle_static()
 
-    def error(self):
-        """The last refused edit, near the top where it is seen (the panel may not show its end)."""
-        ed = self.app.editor
-        if ed.edit_error:
-            imgui.push_text_wrap_pos(0)
-            imgui.text_colored(RED, ed.edit_error)
-            imgui.pop_text_wrap_pos()
-            record(self.app, "inspector:error")
-
     def edit(self, item, field, value):
         self.app.editor.set_property(item, field, value)
+
+    def set_mass(self, b, kg):
+        """The body's mass through its density (mass = density x area): every fixture's density
+        scaled alike, so the mass is where it was within the body."""
+        ed = self.app.editor
+        if not (math.isfinite(kg) and 0 < kg <= MAX_MASS):
+            ed.refuse(f"mass: must be more than 0 and at most {MAX_MASS:g} kg (got {kg:g} kg)")
+            ed.notify(f"refused: {ed.edit_error}", error=True)
+            return
+        self.edit(b, "density", b.density * kg / b.mass)
 
     def body(self, b):
         imgui.text(f"Body {b.name or b.id}: {body_text(b)}")
         imgui.text_colored(DIM, f"mass {b.mass:.4g} kg   inertia {b.inertia:.4g}   {'awake' if b.awake else 'asleep'}")
-        self.error()
         probe_checkboxes(self.app, b)          # near the top: the panel may not show its end
         self.colour(b)
         kinds = ["dynamic", "static", "kinematic"]
@@ -77,27 +82,32 @@ class InspectorSection(Section):
             self.edit(b, "position", tuple(v))
         shown = wrap_degrees(math.degrees(b.angle))
         self.app.ui_values["inspector:angle"] = shown
-        ch, v = imgui.input_float("angle (deg)", shown, 5.0, 45.0, "%.2f", ENTER)
+        ch, v = imgui.input_double("angle (deg)", shown, 5.0, 45.0, "%.2f", ENTER)
         record(self.app, "inspector:angle")
         if ch:
             self.edit(b, "angle", math.radians(wrap_degrees(v)))
         ch, v = imgui.input_float2("velocity", list(b.velocity), "%.3f", ENTER)
         if ch:
             self.edit(b, "velocity", tuple(v))
-        ch, v = imgui.input_float("angular vel.", b.angular_velocity, 0.5, 5.0, "%.3f", ENTER)
+        ch, v = imgui.input_double("angular vel.", b.angular_velocity, 0.5, 5.0, "%.3f", ENTER)
         if ch:
             self.edit(b, "angular_velocity", v)
-        ch, v = imgui.input_float("density", b.density, 0.1, 1.0, "%.3f", ENTER)
+        ch, v = imgui.input_double("density", b.density, 0.1, 1.0, "%.3f", ENTER)
         record(self.app, "inspector:density")
         if ch:
             self.edit(b, "density", v)
-        ch, v = imgui.input_float("restitution", b.restitution, 0.05, 0.2, "%.3f", ENTER)
+        if b.mass > 0:        # a static or kinematic body has no mass to set
+            ch, v = imgui.input_double("mass (kg)", b.mass, 0.1, 1.0, "%.4g", ENTER)
+            record(self.app, "inspector:mass")
+            if ch:
+                self.set_mass(b, v)
+        ch, v = imgui.input_double("restitution", b.restitution, 0.05, 0.2, "%.3f", ENTER)
         if ch:
             self.edit(b, "restitution", v)
-        ch, v = imgui.input_float("static friction", b.static_friction, 0.05, 0.2, "%.3f", ENTER)
+        ch, v = imgui.input_double("static friction", b.static_friction, 0.05, 0.2, "%.3f", ENTER)
         if ch:
             self.edit(b, "friction", (v, b.dynamic_friction))
-        ch, v = imgui.input_float("dynamic friction", b.dynamic_friction, 0.05, 0.2, "%.3f", ENTER)
+        ch, v = imgui.input_double("dynamic friction", b.dynamic_friction, 0.05, 0.2, "%.3f", ENTER)
         if ch:
             self.edit(b, "friction", (b.static_friction, v))
         ch, v = imgui.input_text("name", b.name or "", ENTER)
@@ -131,15 +141,14 @@ class InspectorSection(Section):
         bname = "world" if sp.body_b is None else (sp.body_b.name or sp.body_b.id)
         imgui.text(f"Spring {sp.name or sp.id}: {a} - {bname}")
         imgui.text_colored(DIM, f"length {sp.length:.3f} m")
-        self.error()
         probe_checkboxes(self.app, sp)
-        ch, v = imgui.input_float("stiffness", sp.stiffness, 10.0, 100.0, "%.2f", ENTER)
+        ch, v = imgui.input_double("stiffness", sp.stiffness, 10.0, 100.0, "%.2f", ENTER)
         if ch:
             self.edit(sp, "stiffness", v)
-        ch, v = imgui.input_float("damping", sp.damping, 0.1, 1.0, "%.3f", ENTER)
+        ch, v = imgui.input_double("damping", sp.damping, 0.1, 1.0, "%.3f", ENTER)
         if ch:
             self.edit(sp, "damping", v)
-        ch, v = imgui.input_float("rest length", sp.rest_length, 0.1, 1.0, "%.3f", ENTER)
+        ch, v = imgui.input_double("rest length", sp.rest_length, 0.1, 1.0, "%.3f", ENTER)
         if ch:
             self.edit(sp, "rest_length", v)
         ch, v = imgui.input_float2("anchor a (local)", list(sp.anchor_a), "%.3f", ENTER)

@@ -67,7 +67,7 @@ def optional_number(app, j, name, value, rule, key):
         imgui.text_colored(DIM, f"{name}: none")
         return
     small, big = STEPS[rule]
-    ch, v = imgui.input_float(name, value, small, big, "%.4g", ENTER)
+    ch, v = imgui.input_double(name, value, small, big, "%.4g", ENTER)
     record(app, key)
     if ch:
         ed.set_property(j, name, v)
@@ -86,7 +86,7 @@ def parameter(app, j, name, p):
         optional_number(app, j, name, value, p.rule, key)
     else:
         small, big = STEPS[p.rule]
-        ch, v = imgui.input_float(name, value, small, big, "%.4g", ENTER)
+        ch, v = imgui.input_double(name, value, small, big, "%.4g", ENTER)
         record(app, key)
         if ch:
             ed.set_property(j, name, v)
@@ -125,7 +125,7 @@ def common(app, j):
         if value is None:
             imgui.text_colored(DIM, f"{name}: unbreakable")
             continue
-        ch, v = imgui.input_float(name, value, 10.0, 100.0, "%.4g", ENTER)
+        ch, v = imgui.input_double(name, value, 10.0, 100.0, "%.4g", ENTER)
         record(app, f"inspector:joint:{name}")
         if ch:
             ed.set_property(j, name, v)
@@ -140,7 +140,6 @@ def draw_joint(section, j):
     imgui.text(f"Joint {j.name or j.id}: {j.kind}, {body_label(j.body_a)} - {body_label(j.body_b)}")
     record(app, "inspector:joint")
     readouts(j)
-    section.error()
     for name, p in jp.PARAMS[j.kind].items():
         parameter(app, j, name, p)
     geometry(app, j)

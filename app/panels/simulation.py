@@ -3,7 +3,8 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
-from .base import Section, record, wrapped
+from ..field_bounds import checked_gravity
+from .base import Section, record
 from .style import AMBER, DIM, ENTER, RED
 from .timeline import timeline_slider
 
@@ -30,16 +31,16 @@ class SimulationSection(Section):
         if ch:
             sim.time_scale = v
         self.speed(sim)
-        ch, hz = imgui.input_float("step rate (Hz)", 1.0 / w.dt, 10.0, 60.0, "%.1f", ENTER)
+        ch, hz = imgui.input_double("step rate (Hz)", 1.0 / w.dt, 10.0, 60.0, "%.1f", ENTER)
         record(app, "sim:step_rate")
         if ch:
             app.editor.set_step_rate(hz)
         g = list(w.gravity)
         ch, g = imgui.input_float2("gravity", g, "%.2f", ENTER)
+        record(app, "sim:gravity")
         if ch:
-            app.editor.set_world("gravity", tuple(g), lambda v: setattr(w, "gravity", v), lambda: w.gravity)
-        if app.editor.edit_error and not app.editor.selection:
-            wrapped(RED, app.editor.edit_error)
+            app.editor.set_world("gravity", tuple(g), lambda v: setattr(w, "gravity", checked_gravity(v)),
+                                 lambda: w.gravity)
         if sim.fault:
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(RED, f"Simulation error: {sim.fault}")

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
+from ..scrub_marks import scrubbed
 from .style import DIM
 
 
@@ -17,6 +18,7 @@ def scrub(app, t):
     if shown is None:
         app.notices.notify("timeline: nothing to go back to (an edit changed the bodies or joints)", error=True)
         return
+    scrubbed(app.editor.doc, app.timeline.mark_at_cursor())     # the edits it undid are no longer unsaved
     for tr in app.editor.tracers.items:
         tr.clear()
     app.editor.tracers._last_time = None

@@ -9,6 +9,7 @@ import numpy as np
 
 from ..clipboard import selected_bodies
 from ..commands import Group, SetProperty
+from .world_pins import pin_commands
 
 HANDLE_PX = 9.0          # grab radius of a handle (px)
 ROTATE_PX = 30.0         # the rotate handle's distance above the box (px)
@@ -87,6 +88,7 @@ class Handles:
         self.active = None
         ed = self.editor
         cmds = []
+        moved = []
         for ref, pos0, ang0 in items:
             b = ref.obj
             if not b.alive:
@@ -95,7 +97,9 @@ class Handles:
                 cmds.append(SetProperty(ed, b, "position", b.position, old=tuple(pos0)))
             if kind == "rotate" and b.angle != ang0:
                 cmds.append(SetProperty(ed, b, "angle", b.angle, old=ang0))
+            moved.append((b, pos0, ang0))
         if cmds:
+            cmds += pin_commands(ed, [b for b, _, _ in moved], rigid_move(*moved[0]))
             ed.execute(Group(cmds, f"{kind} {len(items)} bod{'y' if len(items) == 1 else 'ies'}"))
 
     def cancel(self):
@@ -118,3 +122,13 @@ class Handles:
         decor.points.append((knob, 6.0, COLOR))
         if len(bodies) >= 2:
             decor.points.append((centre, 6.0, COLOR))
+
+
+def rigid_move(body, pos0, ang0):
+    """The motion (a function of a world point) that took ``body`` from ``pos0``/``ang0`` to where
+    it is: the handles move and turn every selected body alike."""
+    a = body.angle - ang0
+    c, s = math.cos(a), math.sin(a)
+    rot = np.array([[c, -s], [s, c]])
+    p0, p1 = np.asarray(pos0, dtype=np.float64), np.asarray(body.position, dtype=np.float64)
+    return lambda p: p1 + rot @ (p - p0)

@@ -7,6 +7,7 @@ import numpy as np
 
 from ..laser_commands import AddLaser, AimLaser, RemoveLaser
 from ..lasers import COLOR, Laser, aim_angle, trace
+from ..picking import body_at
 from .base import Tool
 
 GRAB_PX = 9.0        # an emitter within this many pixels of a click is picked, not a new one placed
@@ -39,7 +40,7 @@ class LaserTool(Tool):
             self.selected = hit
             self.aiming = (hit, hit.angle)
             return
-        b = ed.world.query_point(p)
+        b = body_at(ed.world, p)
         if b is None:
             self.pending = Laser(None, p, 0.0)
         else:

@@ -6,12 +6,12 @@ from __future__ import annotations
 import numpy as np
 
 from ..commands import SetProperty
+from ..picking import body_at
 from .base import JOINT, Tool
+from .drag_force import drag_force_limit
 from .handles import Handles
 
 BAND = (0.65, 0.8, 1.0, 0.8)
-#: the mouse joint's force limit per kilogram of the dragged body (N/kg: 100 g)
-MOUSE_FORCE_PER_KG = 1000.0
 
 
 class SelectTool(Tool):
@@ -38,7 +38,7 @@ class SelectTool(Tool):
             self.handles.press(p, grip)
             return
         pin = ed.joint_near(p, lines=False)       # a pin lies on a body: it is picked first
-        b = ed.world.query_point(p) if pin is None else None
+        b = body_at(ed.world, p) if pin is None else None
         link = pin or (None if b is not None else (ed.spring_near(p) or ed.joint_near(p)))
         if link is not None:
             ed.select(link, add=bool(mods & K.MOD_SHIFT))
@@ -59,13 +59,13 @@ class SelectTool(Tool):
     def start_joint(self, b, p):
         """The core's mouse joint from the grabbed point to the cursor: a soft constraint at
         ``joint_hertz`` with ``joint_damping_ratio`` (its softness scales with the body's mass, so
-        every body follows alike), its force capped at MOUSE_FORCE_PER_KG times the mass (Box2D's
-        samples cap it the same way) so a pinned or wedged body cannot be torn loose."""
+        every body follows alike), its force capped at some weights of the body, fewer in the
+        stiff modes (``drag_force.py``)."""
         opts = self.editor.tool_options
         self.body = b
         self.joint = self.editor.world.add_joint("mouse", b, None, target=tuple(map(float, p)),
                                                  hertz=opts.joint_hertz, damping_ratio=opts.joint_damping_ratio,
-                                                 max_force=MOUSE_FORCE_PER_KG * max(b.mass, 1e-6))
+                                                 max_force=drag_force_limit(self.editor.world, b))
         self.editor.tool_joints.add(self.joint.id)
 
     def drag(self, p):

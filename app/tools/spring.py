@@ -4,6 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..commands import AddSpring
+from ..picking import body_at
 from .base import PREVIEW, Tool
 
 
@@ -19,7 +20,7 @@ class SpringTool(Tool):
         self.local_a = None
 
     def press(self, p, button, mods):
-        b = self.editor.world.query_point(p)
+        b = body_at(self.editor.world, p)
         if b is None:
             self.editor.notify("start a spring on a body")
             return
@@ -33,7 +34,7 @@ class SpringTool(Tool):
         self.a = None
         if not a.alive:
             return
-        b = ed.world.query_point(p)
+        b = body_at(ed.world, p)
         if b is a:
             b = None if np.hypot(*(np.array(p) - self.pa)) * ed.camera.scale > 10 else a
             if b is a:

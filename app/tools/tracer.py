@@ -2,6 +2,7 @@
 body's tracers)."""
 from __future__ import annotations
 
+from ..picking import body_at
 from .base import Tool
 
 
@@ -14,7 +15,7 @@ class TracerTool(Tool):
     def press(self, p, button, mods):
         from pyglet.window import key as K
         ed = self.editor
-        b = ed.world.query_point(p)
+        b = body_at(ed.world, p)
         if b is None:
             ed.hint("no body here: click a body to trace a point of it", error=False)
             return

@@ -28,6 +28,7 @@ from .joints import joint_problems
 from .shapes import fixture_fields, kind_of, make_shapes, shape_problem
 from .json_io import Duplicates, NonFinite
 from .problems import finish, preview, quoted, type_name
+from .sandbox import sandbox_problems
 
 _VALIDATOR = None
 _VEC2 = {"$ref": "#/$defs/vec2"}
@@ -373,6 +374,7 @@ def hand_problems(data, bad: Rejected):
     out += name_problems(joints, "joint", "joints", bad)
     out += joint_problems(bodies, joints, bad)
     out += solver_problems(world, bad)
+    out += sandbox_problems(bodies, data.get("sandbox"), bad)
     more, shapes = body_problems(bodies, Rejected([*bad.paths, *(p for p, _ in out)]),
                                  version if version in fmt.VERSIONS else fmt.VERSION)
     return out + more, shapes

@@ -15,6 +15,7 @@ import math
 from ..store import DYNAMIC, KIND_NAMES
 from . import schema as fmt
 from .joints import joint_dict
+from .sandbox import sandbox_bodies, sandbox_dict
 from .shapes import shape_objects
 
 
@@ -137,18 +138,20 @@ def spring_dict(world, sp, names) -> dict:
     return out
 
 
-def body_names(world) -> dict:
-    """id -> name; bodies that springs or joints refer to but that have no name get a free ``bodyN``."""
+def body_names(world, also=()) -> dict:
+    """id -> name; bodies that springs or joints (or the ids in ``also``) refer to but that have
+    no name get a free ``bodyN``, N the body's id (the sandbox shows an unnamed body by its id:
+    the saved name must be what the user saw)."""
     names = {b.id: b.name for b in world.bodies}
     taken = {n for n in names.values() if n is not None}
     links = list(world.springs) + list(world.joints)
-    needed = {x.body_a.id for x in links} | {x.body_b.id for x in links if x.body_b is not None}
-    for i, b in enumerate(world.bodies):
+    needed = {x.body_a.id for x in links} | {x.body_b.id for x in links if x.body_b is not None} | set(also)
+    for b in world.bodies:
         if names[b.id] is None and b.id in needed:
-            name, k = f"body{i}", 0
+            name, k = f"body{b.id}", 0
             while name in taken:
                 k += 1
-                name = f"body{i}_{k}"
+                name = f"body{b.id}_{k}"
             names[b.id] = name
             taken.add(name)
     return names
@@ -175,10 +178,13 @@ def to_dict(world, meta: dict) -> dict:
     out["world"] = world_dict(world)
     if meta.get("camera"):
         out["camera"] = meta["camera"]
-    names = body_names(world)
+    names = body_names(world, sandbox_bodies(meta))
     colors = meta.get("colors") or {}     # body id -> "#rrggbb" (the sandbox's, see load._build)
     out["bodies"] = [body_dict(world, b, names[b.id], colors.get(b.id)) for b in world.bodies]
     out["springs"] = [spring_dict(world, sp, names) for sp in world.springs]
     if world.joints:
         out["joints"] = [joint_dict(world, j, names, _anchor, _same) for j in world.joints]
+    sandbox = sandbox_dict(meta, names)
+    if sandbox:
+        out["sandbox"] = sandbox
     return out

@@ -16,6 +16,7 @@ from .checks import check
 from .joints import add_joints
 from .json_io import parse, read_text
 from .problems import scene_error
+from .sandbox import load_sandbox
 
 
 def read_scene(path) -> dict:
@@ -74,6 +75,7 @@ def _build(data, shapes, source):
     colors = {handles[i].id: b["color"].lower() for i, b in enumerate(data["bodies"]) if "color" in b}
     if colors:
         world.metadata["colors"] = colors
+    load_sandbox(data, by_name, world.metadata)      # the sandbox's lasers and tracers: app data too
     return world
 
 

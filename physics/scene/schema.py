@@ -188,6 +188,30 @@ _CAMERA = {
     },
 }
 
+_SANDBOX_POINT = {"type": "array", "prefixItems": [{"type": "number"}, {"type": "number"}], "items": False,
+          "minItems": 2, "description": "[x, y] (m): in the body's frame, or the world's without a body"}
+
+#: the sandbox's lasers and tracers (app data; physics/scene/sandbox.py loads and saves them)
+SANDBOX = {
+    "type": "object",
+    "description": "The sandbox's lasers and tracers (ignored by the physics)",
+    "additionalProperties": False,
+    "properties": {
+        "lasers": {"type": "array", "default": [], "items": {
+            "type": "object", "additionalProperties": False, "required": ["point"],
+            "properties": {"body": {"type": ["string", "null"], "minLength": 1, "default": None,
+                                    "description": "name of the body it rides on; null: fixed in the world"},
+                           "point": _SANDBOX_POINT,
+                           "angle": {"type": "number", "default": 0.0,
+                                     "description": "beam direction (rad) in the body's frame or the world's"}}}},
+        "tracers": {"type": "array", "default": [], "items": {
+            "type": "object", "additionalProperties": False, "required": ["body", "point"],
+            "properties": {"body": {"type": "string", "minLength": 1, "description": "name of the traced body"},
+                           "point": _SANDBOX_POINT}}},
+    },
+}
+
+
 SCHEMA = {
     "$schema": "https://json-schema.org/draft/2020-12/schema",
     "title": "Stelkropp scene",
@@ -206,6 +230,7 @@ SCHEMA = {
         "bodies": {"type": "array", "items": {"$ref": "#/$defs/body"}},
         "springs": {"type": "array", "default": [], "items": {"$ref": "#/$defs/spring"}},
         "joints": {"type": "array", "default": [], "items": {"$ref": "#/$defs/joint"}},
+        "sandbox": {"$ref": "#/$defs/sandbox"},
     },
     "$defs": {
         "vec2": _vec("[x, y]"),
@@ -216,6 +241,7 @@ SCHEMA = {
         "joint": JOINT_SCHEMA,
         "world": _WORLD,
         "camera": _CAMERA,
+        "sandbox": SANDBOX,
     },
 }
 

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from test_tools import body, new_bodies, to_screen, tools_scene
+from test_tools import body, to_screen, tools_scene
 
 pytestmark = pytest.mark.app
 
@@ -64,7 +64,8 @@ def test_box_select_handles_copy_paste_and_snapping(launch, tmp_path):
     app.settle()
     app.key("ctrl+v")
     st = app.wait(lambda s: s["n_bodies"] == 6, 10, "the pasted copy")
-    new = new_bodies(st, {"bodies": [b for b in st["bodies"] if b["name"]]})
+    new = [b for b in st["bodies"] if (b["name"] or "").endswith(" copy")]     # copies keep their names
+    assert sorted(b["name"] for b in new) == ["a copy", "b copy"]
     assert len(new) == 2 and sorted(st["selection"]) == sorted(b["id"] for b in new)
     mid = np.mean([b["position"] for b in new], axis=0)
     assert mid == pytest.approx((1.0, 6.0), abs=1e-6), "the copy's centre is not at the (snapped) pointer"

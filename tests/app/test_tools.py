@@ -227,8 +227,10 @@ def test_invalid_inspector_edit_is_refused(launch, tmp_path):
     assert "refused" in st["edit_error"] and "density" in st["edit_error"].lower(), st["edit_error"]
     assert any("refused" in m for m in st["messages"])
     assert body(st, "b")["density"] == d0 and not st["dirty"]
-    st = app.frames(3)        # the error line sits above the field: drawn the frame after the edit
+    app.wait(lambda s: "refusal" in s["ui_rects"], 10, "the refusal beside the field")
+    st = app.settle()
     img = app.screenshot("refused")
-    ex0, ey0, ex1, ey1 = map(int, st["ui_rects"]["inspector:error"])
-    assert red_text_pixels(img, ex0, ey0, ex1, ey1) > 30, "the refusal is not shown in the inspector"
+    ex0, ey0, ex1, ey1 = map(int, st["ui_rects"]["refusal"])
+    assert red_text_pixels(img, ex0, ey0, ex1, ey1) > 30, "the refusal is not shown beside the field"
+    assert abs(ey0 - y0) < 10, "the refusal is not at the field's height"
     assert not st["gl_errors"] and not st["fault"]
