@@ -43,12 +43,13 @@ def probe_world(solver: str = options.DEFAULT_SOLVER, integrator: str = options.
 
 def _broad(bp):
     from .collision import broadphase
-    from .collision.broadphase.fixture_filter import filter_pairs
+    from .collision.broadphase.fixture_filter import filter_pairs_flat
     w = probe_world(broadphase=bp)
     w._pipeline.refresh_geometry(w, w.dt)
     s = w._store
-    n, pairs = broadphase.find_pairs(s.fixtures.view, s.fixtures.n, bp, w._pipeline._pairs)
-    filter_pairs(s.fixtures.view, pairs, n, w._pipeline._no_keys)
+    flat = s.fixtures.arrays.flat
+    n, pairs = broadphase.find_pairs(s.fixtures.view, s.fixtures.n, bp, w._pipeline._pairs, flat=flat)
+    filter_pairs_flat(*flat, pairs, n, w._pipeline._no_keys)
 
 
 def _narrow(kind: str = "lean"):
@@ -61,7 +62,7 @@ def _narrow(kind: str = "lean"):
     p._refresh(w, w.dt)
     p.refresh_geometry(w, w.dt)
     # no pairs: numba compiles for the argument types, so the broad phase is not needed here
-    narrowphase.collide(p.ctx, s.bodies.view, s.fixtures.view, s.verts.view, p._pairs, 0, s.contacts)
+    narrowphase.collide(p.ctx, s.bodies.arrays, s.fixtures.arrays, s.verts.arrays, p._pairs, 0, s.contacts)
 
 
 def _solve(solver, integrator):

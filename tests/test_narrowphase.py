@@ -67,7 +67,7 @@ class State:
         ctx.set("dt", DT)
         ctx.set("spec", SPEC)
         ctx.set("narrowphase", NARROWPHASES.index(method))
-        n = collide(ctx, B, F, V, pairs, len(pairs), self.contacts)
+        n = collide(ctx, self.bodies.arrays, self.fixtures.arrays, self.verts.arrays, pairs, len(pairs), self.contacts)
         return self.contacts.cur, n
 
 

@@ -72,7 +72,8 @@ def test_the_narrow_phase_refuses_more_contact_rows_than_its_bound():
     rows = s.contacts.n
     pairs = np.zeros((200, 2), dtype=np.int32)
     with pytest.raises(SimulationError, match="contact rows") as info:
-        narrowphase.collide(w._pipeline.ctx, s.bodies.view, s.fixtures.view, s.verts.view, pairs, 200, s.contacts, 150)
+        narrowphase.collide(w._pipeline.ctx, s.bodies.arrays, s.fixtures.arrays, s.verts.arrays, pairs, 200, s.contacts,
+                            150)
     assert info.value.stage == "collide"
     assert s.contacts.n == rows
 

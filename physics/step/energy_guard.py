@@ -39,8 +39,8 @@ import math
 import numpy as np
 
 from ..store import DYNAMIC
-from ..store.joints import BROKEN, MOTOR
 from .energy_sums import ELASTIC, EXTERNAL, KE, MASS, PE, PUSH, SUMS
+from .energy_sums import joints_working as working_kernel
 
 #: speed (m/s) per contact manifold at which push-out may separate overlapping bodies
 PUSH_SPEED = 10.0
@@ -77,7 +77,7 @@ def noise_floor(world, dt: float) -> float:
 
 def floor_for(mass: float, world, dt: float) -> float:
     """The noise floor of ``mass`` kg of dynamic bodies in ``world`` after a step of ``dt`` (J)."""
-    g = float(np.hypot(*world._gravity))
+    g = math.hypot(world._gravity[0], world._gravity[1])
     return mass * (g * world.linear_slop + 0.5 * (g * dt) ** 2 + 0.5 * NOISE_SPEED ** 2)
 
 
@@ -101,9 +101,7 @@ def joints_working(world) -> bool:
     nj = store.joints.n
     if not nj:
         return False
-    J = store.joints.view
-    working = (J.max_motor[:nj] > 0.0) | ((J.kind[:nj] == MOTOR) & (J.max_torque[:nj] > 0.0))
-    return bool(np.any(working & ((J.flags[:nj] & BROKEN) == 0)))
+    return bool(working_kernel(*store.joints.arrays.flat, nj))
 
 
 def _scale(sums) -> tuple[float, float]:

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from .._jit import kernel
 from ..store import DYNAMIC, KINEMATIC
+from ..store.flat import joints_view
+from ..store.joints import BROKEN, MOTOR
 from .checkpoint import spring_energy
 
 #: the slots of the sums array: kinetic, gravitational, elastic energy (J), dynamic mass (kg),
@@ -66,3 +68,16 @@ def push_sum(B, n, Ca, Cb, nc, count, speed):
             v = count[i] * speed
             total += 0.5 * B.m[i] * v * v
     return total
+
+
+@kernel
+def joints_working(JF, JI, nj):
+    """A motor or mouse joint that can supply energy (a positive motor force or torque, or a motor
+    joint's torque limit) and is not broken, among the ``nj`` joints."""
+    J = joints_view(JF, JI)
+    for j in range(nj):
+        if J.flags[j] & BROKEN:
+            continue
+        if J.max_motor[j] > 0.0 or (J.kind[j] == MOTOR and J.max_torque[j] > 0.0):
+            return True
+    return False

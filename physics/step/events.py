@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..collision.broadphase.fixture_filter import filter_pairs
+from ..collision.broadphase.fixture_filter import filter_pairs_flat
 from ..collision.broadphase.sensor_split import split_sensor_pairs
 from .contact_events import ContactTracker
 from .pair_filter import LOW, PairFilter
@@ -33,15 +33,15 @@ class StepEvents:
         self.cache: dict = {}  # Python events of ``step``, made when asked
         self._sensed = False
 
-    def pairs(self, world, F, pairs, npairs: int, keys) -> int:
+    def pairs(self, world, fixtures, pairs, npairs: int, keys) -> int:
         """Filter the broad phase's pairs in place; returns the contact pairs' count (the
-        sensor pairs, if any, are in ``self.sensors.pairs``)."""
+        sensor pairs, if any, are in ``self.sensors.pairs``).  ``fixtures``: the fixture table."""
         self._sensed = world._n_sensors > 0 or self.sensors.active
         ns = 0
         if self._sensed:
-            npairs, ns = split_sensor_pairs(F, pairs, npairs, keys, self.sensors.room(npairs))
+            npairs, ns = split_sensor_pairs(fixtures.view, pairs, npairs, keys, self.sensors.room(npairs))
         else:
-            npairs = filter_pairs(F, pairs, npairs, keys)
+            npairs = filter_pairs_flat(*fixtures.arrays.flat, pairs, npairs, keys)
         npairs = int(npairs)
         if world._pair_filter is not None:
             npairs = self.filter.apply(world, pairs, npairs)

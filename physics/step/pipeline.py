@@ -32,7 +32,7 @@ from .checkpoint import Checkpoint
 from .energy_guard import EnergyGuard
 from .events import StepEvents
 from .context import ModeParams, StepContext
-from .frame import begin_step, end_step
+from .frame import begin_step_flat, end_step_flat
 from .islands import Islands
 from .profile import StepProfile
 
@@ -105,12 +105,11 @@ class Pipeline:
 
     def collide(self, world, dt: float, geometry: bool = True) -> None:
         s = world._store
-        B = s.bodies.view
         if geometry:
             self.refresh_geometry(world, dt)
         F = s.fixtures.view
         self.npairs, self._pairs = broadphase.find_pairs(F, s.fixtures.n, world.broadphase, self._pairs,
-                                                         world.max_pairs)
+                                                         world.max_pairs, s.fixtures.arrays.flat)
         keys = self._no_keys
         if s.joints.n:  # joined bodies do not collide (unless the joint says so)
             work = joint_work(s)
@@ -118,9 +117,10 @@ class Pipeline:
             keys = work.exclude
         # fixtures of one body, filtered pairs and joined bodies never collide; sensor pairs
         # and the user's pair filter go their own way (events.py)
-        self.npairs = self.events.pairs(world, F, self._pairs, self.npairs, keys)
+        self.npairs = self.events.pairs(world, s.fixtures, self._pairs, self.npairs, keys)
         self.profile.stamp("broadphase")
-        narrowphase.collide(self.ctx, B, F, s.verts.view, self._pairs, self.npairs, s.contacts, world.max_pairs)
+        narrowphase.collide(self.ctx, s.bodies.arrays, s.fixtures.arrays, s.verts.arrays, self._pairs, self.npairs,
+                            s.contacts, world.max_pairs)
         self.events.sense(self.ctx, s)
         self.ctx.set("nc", s.contacts.n)
         self.profile.stamp("narrowphase")
@@ -194,8 +194,9 @@ class Pipeline:
         store = world._store
         ck = self._checkpoint
         ck.ensure(store.bodies.n)
-        begin_step(self.ctx.array, store.bodies.view, store.fixtures.view, store.verts.view, store.fixtures.n,
-                   ck.X, ck.Q, ck.V, ck.W, store.springs.view, self._guard.start)
+        begin_step_flat(self.ctx.array, *store.bodies.arrays.flat, *store.fixtures.arrays.flat,
+                        *store.verts.arrays.flat, store.fixtures.n, ck.X, ck.Q, ck.V, ck.W,
+                        *store.springs.arrays.flat, self._guard.start)
 
     def close_step(self, world):
         """The kernel that closes a step (finite check, energy sums, touch events: frame.py);
@@ -204,8 +205,9 @@ class Pipeline:
         ck = self._checkpoint
         C = store.contacts.cur
         nc = store.contacts.n
-        return end_step(self.ctx.array, store.bodies.view, store.springs.view, ck.bad, ck.why, C.a, C.b, nc,
-                        ck.count, self._guard.end, C.key, C.count, C.depth, C.jn, *self.events.contacts.scratch(nc))
+        return end_step_flat(self.ctx.array, *store.bodies.arrays.flat, *store.springs.arrays.flat, ck.bad, ck.why,
+                             C.a, C.b, nc, ck.count, self._guard.end, C.key, C.count, C.depth, C.jn,
+                             *self.events.contacts.scratch(nc))
 
     #: the stages that write the bodies' state (x, q, v, w); the others read it (collision) or
     #: only zero velocities (islands), so a non-finite state after the step is theirs

@@ -11,11 +11,16 @@ from __future__ import annotations
 
 import numpy as np
 
+from .table import separate
+
 
 def layout(fields: dict) -> dict[str, tuple[str, int, int]]:
-    """{field: ("F" or "I", first column, width)} as store/table.py lays ``fields`` out."""
+    """{field: ("F" or "I", first column, width)} as store/table.py lays ``fields`` out (the fields
+    of two or more dimensions per entry are arrays of their own: not listed)."""
     out, fc, ic = {}, 0, 0
     for name, (shape, dtype) in fields.items():
+        if separate(shape):  # its own array (Columns.X), no columns
+            continue
         w = int(np.prod(shape))
         if np.dtype(dtype).kind == "f":
             out[name] = ("F", fc, w)
@@ -36,8 +41,7 @@ B_KIND, B_SHAPE, B_VSTART, B_VCOUNT, B_AWAKE, B_ISLAND, B_ID = range(7)
 
 # the fixture table (store/fixtures.py); F:
 FX_RADIUS, FX_CENTER_X, FX_CENTER_Y, FX_WCENTER_X, FX_WCENTER_Y = range(5)
-FX_GHOST, FX_WGHOST = 5, 9           # (2, 2) each: before-a x, y, after-b x, y
-FX_DENSITY, FX_E, FX_MU_S, FX_MU_D, FX_AABB = range(13, 18)
+FX_DENSITY, FX_E, FX_MU_S, FX_MU_D, FX_AABB = range(5, 10)   # (ghost, wghost: arrays of their own)
 # ... I:
 FX_BODY, FX_KIND, FX_AWAKE, FX_SHAPE, FX_VSTART, FX_VCOUNT, FX_CATEGORY, FX_MASK, FX_GROUP, FX_SENSOR, \
     FX_ID = range(11)

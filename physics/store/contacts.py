@@ -74,8 +74,7 @@ class ContactBuffer:
     """
 
     def __init__(self, cap: int = 256):
-        self.cur = Contacts(**allocate(CONTACT_FIELDS, cap))
-        self.prev = Contacts(**allocate(CONTACT_FIELDS, cap))
+        self._tables(cap)
         self.n = 0
         self.n_prev = 0
         self.span = 0.0
@@ -91,15 +90,23 @@ class ContactBuffer:
         (collision/narrowphase/limit.py) unless ``need`` itself is larger."""
         if need > self.capacity:
             cap = max(need, 2 * self.capacity if limit is None else min(2 * self.capacity, limit))
-            self.cur = Contacts(**allocate(CONTACT_FIELDS, cap))
-            old = self.prev
-            self.prev = Contacts(**allocate(CONTACT_FIELDS, cap))
-            for k in CONTACT_FIELDS:
-                getattr(self.prev, k)[: self.n_prev] = getattr(old, k)[: self.n_prev]
+            old = self.prev_cols
+            self._tables(cap)
+            for a, b in zip(self.prev_cols.flat, old.flat):
+                a[: self.n_prev] = b[: self.n_prev]
+
+    def _tables(self, cap: int) -> None:
+        """Two zeroed tables of ``cap`` rows: their columns (``*_cols``, whose ``flat`` arrays the
+        step's compiled entry points take) and their views (``cur``, ``prev``)."""
+        self.cur_cols = allocate(CONTACT_FIELDS, cap)
+        self.prev_cols = allocate(CONTACT_FIELDS, cap)
+        self.cur = Contacts(**self.cur_cols)
+        self.prev = Contacts(**self.prev_cols)
 
     def swap(self) -> None:
         """Make the current table the previous one before a new narrow phase."""
         self.cur, self.prev = self.prev, self.cur
+        self.cur_cols, self.prev_cols = self.prev_cols, self.cur_cols
         self.n_prev, self.n = self.n, 0
 
     def adopt(self, span: float, step: int) -> None:

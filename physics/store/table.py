@@ -18,22 +18,45 @@ class Columns(dict):
     (float64, one row per entry) and ``I`` (int64).  One entry's state is one row, as in Box2D
     v3's body and contact records, and a kernel can take the two arrays with named column
     constants instead of one argument per field (docs/flat-step.md).  Integer fields of any
-    width are int64 columns; unsigned 64-bit ones (filter bits) are viewed as uint64."""
+    width are int64 columns; unsigned 64-bit ones (filter bits) are viewed as uint64.
+
+    A field of two or more dimensions per entry (a chain segment's ghost vertices) is its own
+    contiguous array in ``X``: compiled code can slice columns out of ``F`` but cannot reshape
+    a strided slice, so store/flat.py could not rebuild such a view inside a kernel.  ``flat``
+    is what a kernel takes for the whole table: ``(F, I, *X)``."""
 
     F: np.ndarray
     I: np.ndarray
+    X: tuple
+    flat: tuple
     spec: tuple
 
 
+def separate(shape) -> bool:
+    """Whether a field of this per-entry shape is its own array (``Columns.X``), not columns."""
+    return len(shape) >= 2
+
+
+#: F and I are at least this wide: a one-column array's column is contiguous, so numba would
+#: type it 'C' where a column sliced inside a kernel is 'A' (two compiled versions of a kernel)
+MIN_WIDTH = 2
+
+
 def _columns(spec, cap: int) -> Columns:
-    nf = sum(int(np.prod(shp)) for _, shp, dt in spec if dt.kind == "f")
-    ni = sum(int(np.prod(shp)) for _, shp, dt in spec if dt.kind != "f")
+    cols = [(name, shp, dt) for name, shp, dt in spec if not separate(shp)]
+    nf = sum(int(np.prod(shp)) for _, shp, dt in cols if dt.kind == "f")
+    ni = sum(int(np.prod(shp)) for _, shp, dt in cols if dt.kind != "f")
     out = Columns()
-    out.F = np.zeros((cap, max(nf, 1)))
-    out.I = np.zeros((cap, max(ni, 1)), np.int64)
+    out.F = np.zeros((cap, max(nf, MIN_WIDTH)))
+    out.I = np.zeros((cap, max(ni, MIN_WIDTH)), np.int64)
     out.spec = spec
+    extra = []
     fc = ic = 0
     for name, shp, dt in spec:
+        if separate(shp):
+            out[name] = np.zeros((cap,) + shp, dt)
+            extra.append(out[name])
+            continue
         w = int(np.prod(shp))
         if dt.kind == "f":
             base, c = out.F, fc
@@ -43,6 +66,8 @@ def _columns(spec, cap: int) -> Columns:
             ic += w
         view = base[:, c] if not shp else base[:, c:c + w].reshape((cap,) + shp)
         out[name] = view.view(np.uint64) if dt == np.uint64 else view
+    out.X = tuple(extra)
+    out.flat = (out.F, out.I) + out.X
     return out
 
 
@@ -54,9 +79,8 @@ def allocate(fields: dict, cap: int) -> Columns:
 def grown(arrays: Columns, cap: int) -> Columns:
     """The same fields with a larger first dimension (contents kept)."""
     out = _columns(arrays.spec, cap)
-    n = len(arrays.F)
-    out.F[:n] = arrays.F
-    out.I[:n] = arrays.I
+    for a, b in zip(out.flat, arrays.flat):
+        a[:len(b)] = b
     return out
 
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...options import BROADPHASES
-from .brute import brute_pairs
+from .brute import brute_pairs, brute_pairs_flat
 from .limit import MAX_PAIRS, check_pairs
 from .quadtree import build as _build_quadtree
 from .quadtree import quadtree_pairs
@@ -72,9 +72,9 @@ def resolve(method: str, n: int) -> str:
     return method
 
 
-def _run(B, n, method, pairs):
+def _run(B, n, method, pairs, flat):
     if method == "brute":
-        return brute_pairs(B, n, pairs)
+        return brute_pairs(B, n, pairs) if flat is None else brute_pairs_flat(*flat, n, pairs)
     if method == "sweep":
         return sweep_pairs(B, n, _S.state, _S.order, _S.key, _S.b0, _S.b1, _S.bstart,
                            _S.ent, _S.tmp, _S.head, pairs)
@@ -83,8 +83,12 @@ def _run(B, n, method, pairs):
     return k
 
 
-def find_pairs(B, n, method, pairs, limit=MAX_PAIRS):
+def find_pairs(B, n, method, pairs, limit=MAX_PAIRS, flat=None):
     """Interacting overlapping pairs (i < j), sorted; returns (count, pairs).
+
+    ``B``: the fixture table's view (fields ``aabb``, ``kind``, ``awake``); ``flat``: the same
+    table's flat arrays (``Table.arrays.flat``), which a small world's brute-force pass takes
+    instead: its call then unboxes two arrays, not the whole view (store/flat.py).
 
     ``pairs`` is an int32 (P, 2) buffer; when the pairs do not fit, a larger
     buffer is made, filled by one more kernel call, and returned.  More than
@@ -93,12 +97,12 @@ def find_pairs(B, n, method, pairs, limit=MAX_PAIRS):
     """
     m = resolve(method, n)
     _S.ensure(n, len(pairs))
-    count = int(_run(B, n, m, pairs))
+    count = int(_run(B, n, m, pairs, flat))
     check_pairs(count, limit, n)
     if count > len(pairs):
         pairs = np.empty((count + count // 2 + 16, 2), np.int32)
         _S.ensure(n, len(pairs))
-        count = int(_run(B, n, m, pairs))
+        count = int(_run(B, n, m, pairs, flat))
     return count, pairs
 
 

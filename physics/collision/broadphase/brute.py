@@ -5,6 +5,7 @@ Looping i < j emits pairs already in (i, j) order, so no sort is needed.
 from __future__ import annotations
 
 from ..._jit import kernel
+from ...store.flat import fixtures_view
 from .filter import can_pair, overlap
 
 
@@ -25,3 +26,9 @@ def brute_pairs(B, n, pairs):
                     pairs[k, 1] = j
                 k += 1
     return k
+
+
+@kernel
+def brute_pairs_flat(FF, FI, ghost, wghost, n, pairs):
+    """``brute_pairs`` over the fixture table's flat arrays (store/flat.py)."""
+    return brute_pairs(fixtures_view(FF, FI, ghost, wghost), n, pairs)

@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..._jit import kernel
+from ...store.flat import fixtures_view
 
 
 @kernel(inline="always")
@@ -67,3 +68,9 @@ def filter_pairs(F, pairs, npairs, keys):
         pairs[k, 1] = j
         k += 1
     return k
+
+
+@kernel
+def filter_pairs_flat(FF, FI, ghost, wghost, pairs, npairs, keys):
+    """``filter_pairs`` over the fixture table's flat arrays (store/flat.py)."""
+    return filter_pairs(fixtures_view(FF, FI, ghost, wghost), pairs, npairs, keys)

@@ -15,7 +15,7 @@ from __future__ import annotations
 from .circles import circle_circle, polygon_circle
 from .epa import epa
 from .gjk import gjk_distance
-from .kernel import collide_kernel
+from .kernel import collide_flat, collide_kernel
 from .limit import check_rows
 from .pair import GJK, METHODS, SAT, polygon_collide
 from .sat import sat_query
@@ -27,6 +27,7 @@ __all__ = ["collide", "sat_query", "gjk_distance", "epa", "polygon_collide",
 def collide(ctx, B, F, V, pairs, npairs, contacts, limit: int = 1_000_000) -> int:
     """Manifolds for the fixture pairs ``pairs[:npairs]`` into ``contacts.cur``; returns the row count.
 
+    ``B``, ``F``, ``V``: the body, fixture and vertex tables' columns (``Table.arrays``).
     ``ctx`` is the step context (dt, speculative distance, narrow-phase code).
     The previous step's rows become ``contacts.prev`` and carry their point
     state (impulses for warm starting) over to the new ones.  More than ``limit`` rows
@@ -37,14 +38,14 @@ def collide(ctx, B, F, V, pairs, npairs, contacts, limit: int = 1_000_000) -> in
     contacts.ensure(int(npairs), limit)
     # the lean kernel (SAT; sharp polygons and circles: kernel._manifold) until a pair needs more
     lean = not contacts.full and ctx.get("narrowphase") == SAT
+    tables = (*B.flat, *F.flat, *V.flat, pairs, int(npairs), *contacts.cur_cols.flat, *contacts.prev_cols.flat,
+              int(contacts.n_prev))
     n = -1
     if lean:
-        n = collide_kernel(ctx.array, B, F, V, pairs, int(npairs), contacts.cur, contacts.prev,
-                           int(contacts.n_prev), None)
+        n = collide_flat(ctx.array, *tables, None)
     if n < 0:
         if lean:
             contacts.full = True    # this world has such pairs: the whole kernel from now on
-        n = collide_kernel(ctx.array, B, F, V, pairs, int(npairs), contacts.cur, contacts.prev,
-                           int(contacts.n_prev), 1)
+        n = collide_flat(ctx.array, *tables, 1)
     contacts.n = int(n)
     return contacts.n

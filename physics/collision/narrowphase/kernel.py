@@ -19,6 +19,7 @@ import numpy as np
 from ..._jit import kernel
 from ...geometry.shapes import MAX_POLYGON_VERTICES
 from ...store.fixtures import CHAIN_SEGMENT, CIRCLE, POLYGON
+from ...store.flat import bodies_view, contacts_view, fixtures_view, verts_view
 from .chain import chain_circle, chain_polygon
 from .circles import circle_circle, polygon_circle
 from .pair import polygon_pair, sat_pair
@@ -245,3 +246,11 @@ def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, full, dt, spec,
         carry_over(C, row, P, n_prev, ptr)
         row += 1
     return row
+
+
+@kernel
+def collide_flat(ctx, BF, BI, FF, FI, ghost, wghost, VF, VI, pairs, npairs, CF, CI, Cpt, PF, PI, Ppt, n_prev,
+                 full=None):
+    """``collide_kernel`` over the tables' flat arrays (store/flat.py)."""
+    return collide_kernel(ctx, bodies_view(BF, BI), fixtures_view(FF, FI, ghost, wghost), verts_view(VF, VI),
+                          pairs, npairs, contacts_view(CF, CI, Cpt), contacts_view(PF, PI, Ppt), n_prev, full)

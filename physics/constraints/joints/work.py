@@ -17,6 +17,7 @@ import numpy as np
 
 from ...store.joints import BROKEN, COLLIDE, ROWS
 from ..body_rows import NB
+from .kinds import kinds_changed
 from .layout import NF, NG
 from .system.topology import build, empty_system
 
@@ -37,6 +38,7 @@ class JointWork:
         self.S = empty_system(16)
         self.exclude = np.zeros(0, np.int64)
         self._key = None
+        self._kinds = np.full(32, -2, np.int64)  # the joined bodies' kinds at the last rebuild
 
     def update(self, store):
         """(W, S) ready for a step of ``store``; rebuilt only where something changed."""
@@ -47,11 +49,11 @@ class JointWork:
             self.W = _scratch(max(nj, 2 * jcap) if nj > jcap else jcap,
                               max(n + 1, 2 * bcap) if n + 1 > bcap else bcap)
             self._key = None
-        J = store.joints.view
-        B = store.bodies.view
-        kinds = np.concatenate([B.kind[J.a[:nj]], np.where(J.b[:nj] >= 0, B.kind[np.maximum(J.b[:nj], 0)], -1)])
-        key = (store.joints.version, nj, kinds.tobytes())
-        if key != self._key:
+        if len(self._kinds) < 2 * nj:
+            self._kinds = np.full(4 * nj, -2, np.int64)
+        moved = kinds_changed(*store.joints.arrays.flat, *store.bodies.arrays.flat, nj, self._kinds)
+        key = (store.joints.version, nj)
+        if moved or key != self._key:
             self._rebuild(store, nj)
             self._key = key
         return self.W, self.S

@@ -10,7 +10,7 @@ from ...constraints.softness import softness
 from ...settings import Setting, declare
 from ..base import SolverMode
 from ..joint_settings import GLOBAL as _GLOBAL, joint_solver_setting
-from .kernel import GLOBAL, soft_step
+from .kernel import GLOBAL, soft_step_flat
 from .layout import LAYOUTS, ColouredScratch
 
 assert GLOBAL == _GLOBAL
@@ -96,8 +96,9 @@ class SoftStep(SolverMode):
         c.adopt(par.get("h"), step)  # impulses per sub-step; rescaled after a switch
         J, JW, JS = joint_args(store, par.get("h"), step, self.SB)
         if par.values["solver_layout"] == "rows":
-            broken = soft_step(ctx.array, par.array, store.bodies.view, c.cur, store.springs.view, self.R,
-                               self.SB, J, JW, JS)
+            JF, JI = store.joints.arrays.flat if J is not None else (None, None)
+            broken = soft_step_flat(ctx.array, par.array, *store.bodies.arrays.flat, *c.cur_cols.flat,
+                                    *store.springs.arrays.flat, self.R, self.SB, JF, JI, JW, JS)
         else:
             if n + 2 > len(self.SB):  # and a spare row for the padding lanes
                 self._alloc(2 * n + 2)
