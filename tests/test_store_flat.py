@@ -41,3 +41,26 @@ def test_a_flat_view_is_the_python_view(name):
 
 def test_flat_py_is_generated_from_the_table_specs(capsys):
     assert make_flat(["--check"]) == 0, capsys.readouterr().out
+
+
+def test_the_islands_joint_links_kernel_matches_its_numpy_reference():
+    """islands.joint_links_flat (one compiled pass) gives the rows of islands.joint_links (numpy):
+    unbroken joints only, 'driving' for a running motor but never for the mouse joint."""
+    import physics
+    from physics.step.islands import joint_links, joint_links_flat
+    from physics.store.joints import BROKEN
+    w = physics.World()
+    a = w.add_body(physics.Polygon.box(1, 1), position=(0, 0))
+    b = w.add_body(physics.Polygon.box(1, 1), position=(1, 0))
+    c = w.add_body(physics.Circle(0.3), position=(2, 0))
+    w.add_joint("revolute", a, b, anchor=(0.5, 0.0), motor_speed=1.0, max_motor_torque=5.0)
+    w.add_joint("revolute", b, c, anchor=(1.5, 0.0), motor_speed=0.0, max_motor_torque=5.0)
+    w.add_joint("weld", c, None, anchor=(2.0, 0.0))
+    w.add_joint("mouse", a, None, target=(0.0, 1.0))
+    J = w._store.joints
+    J.view.flags[2] |= BROKEN
+    out = np.zeros((8, 3), np.int64)
+    k = joint_links_flat(*J.arrays.flat, J.n, out)
+    want = joint_links(J)
+    assert k == 3 and np.array_equal(out[:k], want)
+    assert list(want[:, 2]) == [1, 0, 0]

@@ -18,6 +18,7 @@ import numpy as np
 
 from .._jit import kernel
 from ..store import DYNAMIC, KINEMATIC
+from ..store.flat import bodies_view, contacts_view, joints_view, springs_view
 from ..store.joints import BROKEN, MOUSE
 from ..store.union_find import find_root, union_roots
 
@@ -199,6 +200,13 @@ def update_islands(ctx, B, C, S, JL, parent, min_t, label):
     return awake
 
 
+@kernel
+def update_islands_flat(ctx, BF, BI, CF, CI, Cpt, SF, SI, JL, parent, min_t, label):
+    """``update_islands`` over the body, contact and spring tables' flat arrays (store/flat.py)."""
+    return update_islands(ctx, bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI), JL, parent,
+                          min_t, label)
+
+
 class Islands:
     """Scratch for the sleep update, reused every step."""
 
@@ -207,15 +215,20 @@ class Islands:
         self.min_t = np.zeros(64)
         self.label = np.zeros(1, dtype=np.int64)
         self._no_links = np.zeros((0, 3), dtype=np.int64)
+        self._links = np.zeros((16, 3), dtype=np.int64)
 
     def update(self, ctx, store) -> int:
         n = store.bodies.n
         if n > len(self.parent):
             self.parent = np.zeros(2 * n, dtype=np.int64)
             self.min_t = np.zeros(2 * n)
-        links = joint_links(store.joints) if store.joints.n else self._no_links
-        return update_islands(ctx.array, store.bodies.view, store.contacts.cur, store.springs.view, links,
-                              self.parent, self.min_t, self.label)
+        links = self._no_links
+        if store.joints.n:
+            if store.joints.n > len(self._links):
+                self._links = np.zeros((2 * store.joints.n, 3), dtype=np.int64)
+            links = self._links[:joint_links_flat(*store.joints.arrays.flat, store.joints.n, self._links)]
+        return update_islands_flat(ctx.array, *store.bodies.arrays.flat, *store.contacts.cur_cols.flat,
+                                   *store.springs.arrays.flat, links, self.parent, self.min_t, self.label)
 
 
 def joint_links(joints) -> np.ndarray:
@@ -229,3 +242,18 @@ def joint_links(joints) -> np.ndarray:
     out[:, 1] = J.b[:n][keep]
     out[:, 2] = driving[keep]
     return out
+
+
+@kernel
+def joint_links_flat(JF, JI, nj, out):
+    """``joint_links`` of the joint table's flat arrays into ``out``; returns the row count."""
+    J = joints_view(JF, JI)
+    k = 0
+    for j in range(nj):
+        if J.flags[j] & BROKEN:
+            continue
+        out[k, 0] = J.a[j]
+        out[k, 1] = J.b[j]
+        out[k, 2] = J.max_motor[j] > 0.0 and J.motor_speed[j] != 0.0 and J.kind[j] != MOUSE
+        k += 1
+    return k

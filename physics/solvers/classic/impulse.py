@@ -17,6 +17,7 @@ from __future__ import annotations
 from ..._jit import kernel
 from ...constraints.point import prepare_points
 from ...settings import Setting, declare
+from ...store.flat import bodies_view, contacts_view, joints_view, springs_view
 from .classic_joints import begin_classic_joints, end_classic_joints
 from .common import COMMON, IMPULSE_SETTINGS, NO_PENALTY, PROJECTIONS, SeedMode, auto_speed, share_factor
 from .contact_geometry import classify
@@ -57,6 +58,16 @@ def impulse_step(ctx, par, B, C, S, P, R, hybrid, J, JW, JS):
     return end_classic_joints(c, p, B, J, JW, JS)
 
 
+@kernel
+def impulse_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, P, R, hybrid, JF, JI, JW, JS):
+    """``impulse_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
+    ``JF`` None: a world without joints."""
+    B, C, S = bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI)
+    if JF is None:
+        return impulse_step(ctx, par, B, C, S, P, R, hybrid, None, JW, JS)
+    return impulse_step(ctx, par, B, C, S, P, R, hybrid, joints_view(JF, JI), JW, JS)
+
+
 class ImpulseMode(SeedMode):
     name = "impulse"
     description = ("The seed's impulse response: eq. 15 impulses with restitution and Coulomb friction "
@@ -87,8 +98,9 @@ class ImpulseMode(SeedMode):
     def step(self, ctx, par, store):
         R, P = self.work(store.bodies.n, store.contacts.n)
         J, JW, JS = self.joints(ctx, par, store)
-        broken = impulse_step(ctx.array, par.array, store.bodies.view, store.contacts.cur, store.springs.view,
-                              P, R, self.hybrid, J, JW, JS)
+        JF, JI = store.joints.arrays.flat if J is not None else (None, None)
+        broken = impulse_step_flat(ctx.array, par.array, *store.bodies.arrays.flat, *store.contacts.cur_cols.flat,
+                                   *store.springs.arrays.flat, P, R, self.hybrid, JF, JI, JW, JS)
         self.joints_done(store, J, broken)
 
     hybrid = False

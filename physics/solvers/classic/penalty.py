@@ -13,6 +13,7 @@ from __future__ import annotations
 from ..._jit import kernel
 from ...constraints.point import prepare_points
 from ...settings import declare
+from ...store.flat import bodies_view, contacts_view, joints_view, springs_view
 from .common import COMMON, PENALTY_SETTINGS, SeedMode, contact_rate, penalty_params
 from .classic_joints import begin_classic_joints, end_classic_joints
 from .contact_geometry import PENALTY, flag_all
@@ -34,6 +35,16 @@ def penalty_step(ctx, par, B, C, S, P, R, J, JW, JS):
     return end_classic_joints(c, p, B, J, JW, JS)
 
 
+@kernel
+def penalty_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, P, R, JF, JI, JW, JS):
+    """``penalty_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
+    ``JF`` None: a world without joints."""
+    B, C, S = bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI)
+    if JF is None:
+        return penalty_step(ctx, par, B, C, S, P, R, None, JW, JS)
+    return penalty_step(ctx, par, B, C, S, P, R, joints_view(JF, JI), JW, JS)
+
+
 class PenaltyMode(SeedMode):
     name = "penalty"
     description = ("The seed's penalty contacts: damped springs along the penetration vector with a "
@@ -49,8 +60,9 @@ class PenaltyMode(SeedMode):
     def step(self, ctx, par, store):
         R, P = self.work(store.bodies.n, store.contacts.n)
         J, JW, JS = self.joints(ctx, par, store)
-        broken = penalty_step(ctx.array, par.array, store.bodies.view, store.contacts.cur, store.springs.view,
-                              P, R, J, JW, JS)
+        JF, JI = store.joints.arrays.flat if J is not None else (None, None)
+        broken = penalty_step_flat(ctx.array, par.array, *store.bodies.arrays.flat, *store.contacts.cur_cols.flat,
+                                   *store.springs.arrays.flat, P, R, JF, JI, JW, JS)
         self.joints_done(store, J, broken)
 
     def stages(self, store, values, integrator):

@@ -10,7 +10,7 @@ from ...constraints.point import point_rows, point_type
 from ...settings import Setting, declare
 from ..base import SolverMode
 from ..joint_settings import GLOBAL as _GLOBAL, joint_position_setting, joint_solver_setting
-from .kernel import BAUMGARTE, GLOBAL, SPLIT, si_step
+from .kernel import BAUMGARTE, GLOBAL, SPLIT, si_step_flat
 
 assert GLOBAL == _GLOBAL
 
@@ -70,8 +70,9 @@ class SequentialImpulse(SolverMode):
         step = int(ctx.get("step"))
         c.adopt(ctx.get("dt"), step)
         J, JW, JS = joint_args(store, ctx.get("dt"), step)
-        broken = si_step(ctx.array, par.array, store.bodies.view, c.cur, store.springs.view, self.W, self.M,
-                         J, JW, JS)
+        JF, JI = store.joints.arrays.flat if J is not None else (None, None)
+        broken = si_step_flat(ctx.array, par.array, *store.bodies.arrays.flat, *c.cur_cols.flat,
+                              *store.springs.arrays.flat, self.W, self.M, JF, JI, JW, JS)
         if J is not None:
             after_step(store, broken)
 
