@@ -99,14 +99,50 @@ def test_a_moving_kinematic_body_is_external_input():
     assert w.fault is None and max(b.velocity[0] for b in boxes) > 10.0
 
 
-def test_a_motor_is_external_input():
-    """A revolute motor spins a wheel up to 50 rad/s from rest."""
+def test_a_motor_may_add_the_work_it_does():
+    """A revolute motor spins a wheel up to 50 rad/s from rest: 1/2 I w^2 = 123 J, all of it the
+    motor's work (at most T |w| per second), under a guard that stays on."""
     w = physics.World(gravity=(0, 0))
     wheel = w.add_body(physics.Circle(0.5))
     w.add_joint("revolute", wheel, None, anchor=(0, 0), motor_speed=50.0, max_motor_torque=100.0)
     for _ in range(120):
         w.step()
+        assert w._pipeline._guard.active
     assert wheel.angular_velocity == pytest.approx(50.0, rel=1e-3)
+
+
+def _spring_beside_a_motor(**motor):
+    """The exploding spring of ``exploding_spring``, and away from it a wheel on a revolute joint
+    to the world (``motor``: the joint's motor parameters)."""
+    w, _ = exploding_spring()
+    wheel = w.add_body(physics.Circle(0.5), position=(10.0, 0.0))
+    w.add_joint("revolute", wheel, None, anchor=(10.0, 0.0), **motor)
+    return w
+
+
+@pytest.mark.parametrize("motor", [dict(motor_speed=0.0, max_motor_torque=0.05),
+                                   dict(motor_speed=2.0, max_motor_torque=0.05)], ids=["friction", "driven"])
+def test_a_motor_does_not_switch_the_guard_off(motor):
+    """Joint friction (a motor of speed 0 and a small torque, the ragdoll's recipe) and a small
+    driven motor leave the guard on: the explicit Euler explosion beside them is refused.  (When
+    any working motor switched the guard off, the whole world ran unguarded.)"""
+    w = _spring_beside_a_motor(**motor)
+    with pytest.raises(SimulationError, match="total energy"):
+        for _ in range(3000):
+            w.step()
+
+
+def test_a_mouse_drag_is_the_users_input():
+    """The mouse joint pulls with the user's hand: no bound on the energy it puts in."""
+    w = physics.World(gravity=(0, 0))
+    w.sleeping = False
+    b = w.add_body(physics.Circle(0.5))
+    mouse = w.add_joint("mouse", b, None, target=(0.0, 0.0), max_force=1e4)  # grabbed at its centre,
+    mouse.target = (50.0, 0.0)                                                  # then pulled
+    for _ in range(60):
+        w.step()
+        assert not w._pipeline._guard.active
+    assert b.position[0] > 40.0  # pulled most of the 50 m
 
 
 def test_an_edit_between_steps_starts_a_new_reference():
@@ -133,3 +169,27 @@ def test_a_welded_cantilever_at_rest_near_zero_energy_is_not_refused():
         for _ in range(120):
             w.step()
         assert w.fault is None
+
+
+def _refusal_step(height: float, steps: int = 4000):
+    """The step at which the exploding spring of ``exploding_spring``, hung in gravity with its
+    anchor ``height`` m up, is refused (None: never)."""
+    w = physics.World(solver="impulse", gravity=(0, -10), integrator="euler")
+    b = w.add_body(physics.Circle(0.1), position=(1.0, height))
+    w.add_spring(b, None, anchor_b=(0.0, height), stiffness=100.0, rest_length=0.0)
+    for i in range(steps):
+        try:
+            w.step()
+        except SimulationError:
+            return i
+    return None
+
+
+def test_the_bound_does_not_depend_on_where_the_origin_is():
+    """The same exploding world at the origin and 100 km up (gravity on) is refused at the same
+    step, give or take rounding: the scale measures gravitational energy from the reference
+    state, so m g y of a far-off origin buys no slack (with |m g y| in the scale, the world 100 km
+    up ran 31 kJ of slack and went unrefused)."""
+    here, up = _refusal_step(0.0), _refusal_step(1e5)
+    assert here is not None and up is not None
+    assert abs(here - up) <= 2, (here, up)

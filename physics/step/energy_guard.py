@@ -1,13 +1,14 @@
 """The energy guard: a step whose world gains energy it cannot have been given is refused.
 
-Without external input (a user force, a moving kinematic body, a motor or mouse joint) a
+Without external input (a user force, a moving kinematic body, a mouse joint's drag) a
 world's total energy E = kinetic + gravitational + elastic (springs) cannot grow: contacts,
 friction, springs' dampers and joints only conserve or dissipate it.  The solvers are not
 exact, so the guard allows a stated bound instead of zero.  From the reference state (the
 first step, or the first one after an edit or an external input) with energy E0 and energy
-scale S0 = KE + elastic + |gravitational| (all >= 0) and S the scale now,
+scale S0 = KE + elastic + |gravitational - gravitational at the reference| (all >= 0) and S
+the scale now,
 
-    E <= E0 + r (S0 + S / 2) + 1/2 sum_i m_i (c_i v_p)^2 + F,
+    E <= E0 + r (S0 + S / 2) + 1/2 sum_i m_i (c_i v_p)^2 + W + F,
 
 - ``r`` (``world.energy_guard``, default 1): the energy present may grow by its own size.
   Symplectic Euler's energy error on an oscillator is O(omega h) of its energy and the seed
@@ -21,6 +22,17 @@ scale S0 = KE + elastic + |gravitational| (all >= 0) and S the scale now,
   (n bodies heaped in one place fan out at up to (n - 1) / 2 times a mode's push-out speed;
   soft_step's is 3 m/s, penalty's 2).  The largest allowance seen since the reference counts,
   so a body pushed out earlier keeps its speed.
+
+- the scale measures gravitational energy from the reference state, not from y = 0: where the
+  origin lies is the user's choice, and a world 100 km up would otherwise get m g 1e5 J of
+  slack, enough to accept what the same world at the origin refuses.  E itself may keep any
+  zero: only its change is bounded.
+
+- the motors' work W: a joint motor adds at most its force or torque times the relative speed
+  it acts on (energy_sums.motor_power), so each step adds dt (P_start + P_end) to W, P the
+  bound at the step's start and end.  A motor does not switch the guard off: joint friction
+  (a motor of speed 0 and a small torque, as in the ragdoll) only takes energy out, and a
+  driven wheel may gain what its motor can give and no more.
 
 - the noise floor F = sum_i m_i (|g| slop + (|g| dt)^2 / 2 + v_n^2 / 2), v_n = 1 mm/s: a body
   lifted by the linear slop, the speed of one step's fall, and 1 mm/s are solver noise, not
@@ -39,8 +51,7 @@ import math
 import numpy as np
 
 from ..store import DYNAMIC
-from .energy_sums import ELASTIC, EXTERNAL, KE, MASS, PE, PUSH, SUMS
-from .energy_sums import joints_working as working_kernel
+from .energy_sums import ELASTIC, EXTERNAL, KE, MASS, PE, PUSH, SUMS, motor_power
 
 #: speed (m/s) per contact manifold at which push-out may separate overlapping bodies
 PUSH_SPEED = 10.0
@@ -95,19 +106,20 @@ def push_allowance(world) -> float:
     return 0.5 * float((B.m[:n][dyn] * (count[dyn] * PUSH_SPEED) ** 2).sum())
 
 
-def joints_working(world) -> bool:
-    """A working motor or mouse joint (one that can supply energy) that is not broken."""
+def _motor_power(world) -> tuple[float, bool]:
+    """(the joints' motor power bound in W, whether a mouse joint pulls): energy_sums.motor_power."""
     store = world._store
-    nj = store.joints.n
-    if not nj:
-        return False
-    return bool(working_kernel(*store.joints.arrays.flat, nj))
+    if not store.joints.n:
+        return 0.0, False
+    p, dragged = motor_power(*store.joints.arrays.flat, *store.bodies.arrays.flat, store.joints.n)
+    return float(p), bool(dragged)
 
 
-def _scale(sums) -> tuple[float, float]:
-    """(E, S) from a sums array of energy_sums.guard_sums."""
+def _scale(sums, pe_ref: float) -> tuple[float, float]:
+    """(E, S) from a sums array of energy_sums.guard_sums, the gravitational part of S measured
+    from ``pe_ref`` (the reference state's)."""
     ke, pe, elastic = sums[KE], sums[PE], sums[ELASTIC]
-    return ke + pe + elastic, ke + elastic + abs(pe)
+    return ke + pe + elastic, ke + elastic + abs(pe - pe_ref)
 
 
 class EnergyGuard:
@@ -120,6 +132,9 @@ class EnergyGuard:
     def __init__(self):
         self.last = math.nan  # energy at the end of the last accepted step (nan: none)
         self.e0 = self.s0 = self.push = 0.0
+        self.pe_ref = 0.0  # gravitational energy (J) of the reference state
+        self.work = 0.0     # bound of the work the motors did since the reference (J)
+        self.p_start = 0.0  # the motors' power bound at this step's start (W)
         self.active = False
         self.start = np.zeros(SUMS)
         self.end = np.zeros(SUMS)
@@ -128,13 +143,16 @@ class EnergyGuard:
         """Before a step (after begin_step filled ``self.start``): start a new reference after an
         edit or an external input."""
         growth = world.energy_guard
-        if growth <= 0.0 or self.start[EXTERNAL] or joints_working(world):
+        self.p_start, dragged = _motor_power(world)
+        if growth <= 0.0 or self.start[EXTERNAL] or dragged:
             self.active = False
             self.last = math.nan
             return
-        e, s = _scale(self.start)
+        e, s = _scale(self.start, self.pe_ref)
         if not (e == self.last and self.active):
-            self.e0, self.s0, self.push = e, s, 0.0
+            self.pe_ref = float(self.start[PE])
+            e, s = _scale(self.start, self.pe_ref)
+            self.e0, self.s0, self.push, self.work = e, s, 0.0, 0.0
         self.active = True
         self.e_start = e
 
@@ -143,13 +161,17 @@ class EnergyGuard:
         the bound, else None."""
         if not self.active:
             return None
-        e, s = _scale(self.end)
+        e, s = _scale(self.end, self.pe_ref)
         self.push = max(self.push, float(self.end[PUSH]))
         floor = floor_for(self.end[MASS], world, dt)
-        limit = self.e0 + world.energy_guard * (self.s0 + 0.5 * s) + self.push + floor
+        # the motors' work: at most their power bound at the step's start and at its end, each
+        # over the whole step (the speeds in between lie between them, give or take the solver)
+        work = self.work + dt * (self.p_start + _motor_power(world)[0])
+        limit = self.e0 + world.energy_guard * (self.s0 + 0.5 * s) + self.push + work + floor
         # rounding: E sums terms of size up to S
         if e - limit > 1e-12 * (s + self.s0 + abs(self.e0)) + 1e-300:
             self.last = self.e_start  # the step is reverted to the state it started from
             return e, limit
         self.last = e
+        self.work = work
         return None

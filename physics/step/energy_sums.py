@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from .._jit import kernel
 from ..store import DYNAMIC, KINEMATIC
-from ..store.flat import joints_view
-from ..store.joints import BROKEN, MOTOR
+from ..store.flat import bodies_view, joints_view
+from ..store.joints import BROKEN, MOTOR, MOUSE, PRISMATIC, REVOLUTE, WHEEL
 from .checkpoint import spring_energy
 
 #: the slots of the sums array: kinetic, gravitational, elastic energy (J), dynamic mass (kg),
@@ -71,13 +71,38 @@ def push_sum(B, n, Ca, Cb, nc, count, speed):
 
 
 @kernel
-def joints_working(JF, JI, nj):
-    """A motor or mouse joint that can supply energy (a positive motor force or torque, or a motor
-    joint's torque limit) and is not broken, among the ``nj`` joints."""
-    J = joints_view(JF, JI)
+def motor_power(JF, JI, BF, BI, nj):
+    """(P, dragged): P bounds the power (W) the ``nj`` joints' motors can put in at the bodies'
+    current velocities, and ``dragged`` says a mouse joint pulls (the user's input, unbounded).
+
+    A motor's power is its force or torque times the relative speed it acts on, so a motor of
+    at most T N m on a relative angular velocity w_rel supplies at most T |w_rel|; a force of at
+    most F at the anchors supplies at most F |v_rel|, and the anchors' relative velocity is at
+    most |v_b - v_a| + |w_a| |r_a| + |w_b| |r_b| (r: the anchor arms).  A motor used as joint
+    friction (speed 0) only takes energy out; the bound still allows it T |w_rel|."""
+    J, B = joints_view(JF, JI), bodies_view(BF, BI)
+    p = 0.0
+    dragged = False
     for j in range(nj):
-        if J.flags[j] & BROKEN:
+        if J.flags[j] & BROKEN or (J.max_motor[j] <= 0.0 and not (J.kind[j] == MOTOR and J.max_torque[j] > 0.0)):
             continue
-        if J.max_motor[j] > 0.0 or (J.kind[j] == MOTOR and J.max_torque[j] > 0.0):
-            return True
-    return False
+        k = J.kind[j]
+        if k == MOUSE:
+            dragged = True
+            continue
+        a, b = J.a[j], J.b[j]
+        wa = B.w[a]
+        wb = B.w[b] if b >= 0 else 0.0
+        w_rel = abs(wb - wa)
+        if k == REVOLUTE or k == WHEEL:
+            p += J.max_motor[j] * w_rel
+            continue
+        dvx = (B.v[b, 0] if b >= 0 else 0.0) - B.v[a, 0]
+        dvy = (B.v[b, 1] if b >= 0 else 0.0) - B.v[a, 1]
+        ra = (J.la[j, 0] ** 2 + J.la[j, 1] ** 2) ** 0.5
+        rb = (J.lb[j, 0] ** 2 + J.lb[j, 1] ** 2) ** 0.5 if b >= 0 else 0.0
+        v_rel = (dvx * dvx + dvy * dvy) ** 0.5 + abs(wa) * ra + abs(wb) * rb
+        p += J.max_motor[j] * v_rel
+        if k == MOTOR:
+            p += J.max_torque[j] * w_rel
+    return p, dragged
