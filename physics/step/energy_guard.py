@@ -5,8 +5,8 @@ world's total energy E = kinetic + gravitational + elastic (springs) cannot grow
 friction, springs' dampers and joints only conserve or dissipate it.  The solvers are not
 exact, so the guard allows a stated bound instead of zero.  From the reference state (the
 first step, or the first one after an edit or an external input) with energy E0 and energy
-scale S0 = KE + elastic + |gravitational - gravitational at the reference| (all >= 0) and S
-the scale now,
+scale S0 = KE + elastic + gravitational above the lowest dynamic body (all >= 0) and S the
+scale now,
 
     E <= E0 + r (S0 + S / 2) + 1/2 sum_i m_i (c_i v_p)^2 + W + F,
 
@@ -23,10 +23,11 @@ the scale now,
   soft_step's is 3 m/s, penalty's 2).  The largest allowance seen since the reference counts,
   so a body pushed out earlier keeps its speed.
 
-- the scale measures gravitational energy from the reference state, not from y = 0: where the
-  origin lies is the user's choice, and a world 100 km up would otherwise get m g 1e5 J of
-  slack, enough to accept what the same world at the origin refuses.  E itself may keep any
-  zero: only its change is bounded.
+- the scale measures gravitational energy from the lowest dynamic body, sum_i m_i |g| (h_i -
+  h_min), not from y = 0: where the origin lies is the user's choice, and a world 100 km up
+  would otherwise get m g 1e5 J of slack, enough to accept what the same world at the origin
+  refuses.  The height the bodies can still fall is the world's own scale (a hanging joint
+  grid's links swing through it).  E itself may keep any zero: only its change is bounded.
 
 - the motors' work W: a joint motor adds at most its force or torque times the relative speed
   it acts on (energy_sums.motor_power), so each step adds dt (P_start + P_end) to W, P the
@@ -51,7 +52,7 @@ import math
 import numpy as np
 
 from ..store import DYNAMIC
-from .energy_sums import ELASTIC, EXTERNAL, KE, MASS, PE, PUSH, SUMS, motor_power
+from .energy_sums import ELASTIC, EXTERNAL, KE, LOWEST, MASS, PE, PUSH, SUMS, motor_power
 
 #: speed (m/s) per contact manifold at which push-out may separate overlapping bodies
 PUSH_SPEED = 10.0
@@ -115,11 +116,11 @@ def _motor_power(world) -> tuple[float, bool]:
     return float(p), bool(dragged)
 
 
-def _scale(sums, pe_ref: float) -> tuple[float, float]:
+def _scale(sums) -> tuple[float, float]:
     """(E, S) from a sums array of energy_sums.guard_sums, the gravitational part of S measured
-    from ``pe_ref`` (the reference state's)."""
+    from the lowest dynamic body (sum_i m_i g (h_i - h_min): no origin in it)."""
     ke, pe, elastic = sums[KE], sums[PE], sums[ELASTIC]
-    return ke + pe + elastic, ke + elastic + abs(pe - pe_ref)
+    return ke + pe + elastic, ke + elastic + max(pe - sums[MASS] * sums[LOWEST], 0.0)
 
 
 class EnergyGuard:
@@ -132,7 +133,6 @@ class EnergyGuard:
     def __init__(self):
         self.last = math.nan  # energy at the end of the last accepted step (nan: none)
         self.e0 = self.s0 = self.push = 0.0
-        self.pe_ref = 0.0  # gravitational energy (J) of the reference state
         self.work = 0.0     # bound of the work the motors did since the reference (J)
         self.p_start = 0.0  # the motors' power bound at this step's start (W)
         self.active = False
@@ -148,10 +148,8 @@ class EnergyGuard:
             self.active = False
             self.last = math.nan
             return
-        e, s = _scale(self.start, self.pe_ref)
+        e, s = _scale(self.start)
         if not (e == self.last and self.active):
-            self.pe_ref = float(self.start[PE])
-            e, s = _scale(self.start, self.pe_ref)
             self.e0, self.s0, self.push, self.work = e, s, 0.0, 0.0
         self.active = True
         self.e_start = e
@@ -161,7 +159,7 @@ class EnergyGuard:
         the bound, else None."""
         if not self.active:
             return None
-        e, s = _scale(self.end, self.pe_ref)
+        e, s = _scale(self.end)
         self.push = max(self.push, float(self.end[PUSH]))
         floor = floor_for(self.end[MASS], world, dt)
         # the motors' work: at most their power bound at the step's start and at its end, each

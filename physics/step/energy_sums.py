@@ -16,9 +16,10 @@ from ..store.joints import BROKEN, MOTOR, MOUSE, PRISMATIC, REVOLUTE, WHEEL
 from .checkpoint import spring_energy
 
 #: the slots of the sums array: kinetic, gravitational, elastic energy (J), dynamic mass (kg),
-#: external input (1.0 or 0.0), push-out allowance (J, after the step only)
-KE, PE, ELASTIC, MASS, EXTERNAL, PUSH = range(6)
-SUMS = 6
+#: external input (1.0 or 0.0), push-out allowance (J, after the step only), and the lowest
+#: gravitational potential of a dynamic body (J/kg: min over i of -g . x_i)
+KE, PE, ELASTIC, MASS, EXTERNAL, PUSH, LOWEST = range(7)
+SUMS = 7
 
 
 @kernel(_nrt=False)
@@ -28,6 +29,7 @@ def guard_sums(B, S, n, ns, gx, gy, out):
     pe = 0.0
     mass = 0.0
     ext = 0.0
+    lowest = 0.0
     for i in range(n):
         kind = B.kind[i]
         vx = B.v[i, 0]
@@ -36,7 +38,9 @@ def guard_sums(B, S, n, ns, gx, gy, out):
         if kind == DYNAMIC:
             m = B.m[i]
             ke += 0.5 * (m * (vx * vx + vy * vy) + B.inertia[i] * w * w)
-            pe -= m * (B.x[i, 0] * gx + B.x[i, 1] * gy)
+            u = -(B.x[i, 0] * gx + B.x[i, 1] * gy)
+            pe += m * u
+            lowest = u if mass == 0.0 else min(lowest, u)
             mass += m
         elif kind == KINEMATIC and (vx != 0.0 or vy != 0.0 or w != 0.0):
             ext = 1.0
@@ -51,6 +55,7 @@ def guard_sums(B, S, n, ns, gx, gy, out):
     out[ELASTIC] = elastic
     out[MASS] = mass
     out[EXTERNAL] = ext
+    out[LOWEST] = lowest
 
 
 @kernel(_nrt=False)
