@@ -11,7 +11,8 @@ from .dialogs import Dialogs
 from .hits import PanelHits
 from .inspector import InspectorSection
 from .plot_tab import PlotTab
-from .notes import cursor_hint, messages, progress_window
+from ..scene_caption import caption_of
+from .notes import cursor_hint, messages, progress_window, scene_caption
 from .refusal import RefusalBubble
 from .scene import SceneSection
 from .simulation import SimulationSection
@@ -74,12 +75,22 @@ class Panels:
         self.solver.find.tick()
         if self.show_stats:
             self.stats.draw()
+        self.caption()
         messages(app)
         cursor_hint(app)
         self.refusal.draw()
         self.dialogs.draw()
         self.context.draw()
         self.tools.drop()
+
+    def caption(self):
+        app = self.app
+        text = caption_of(app.world.metadata)
+        if text is None:
+            app.ui_rects.pop("caption", None)
+            app.ui_values.pop("caption", None)
+            return
+        scene_caption(app, text)
 
     def main_window(self):
         app = self.app

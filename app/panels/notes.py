@@ -32,7 +32,9 @@ def messages(app):
 def overlay_note(app, text):
     """One amber line at the top of the scene (e.g. a mode still compiling)."""
     x0, y0, x1, _ = app.free_rect()
-    imgui.set_next_window_pos(imgui.ImVec2(0.5 * (x0 + x1), y0 + 14), imgui.Cond_.always.value, imgui.ImVec2(0.5, 0.0))
+    cap = app.ui_rects.get("caption")
+    y = cap[3] + 4 if cap is not None else y0 + 14       # below the scene's caption, not over it
+    imgui.set_next_window_pos(imgui.ImVec2(0.5 * (x0 + x1), y), imgui.Cond_.always.value, imgui.ImVec2(0.5, 0.0))
     imgui.begin("##note", None, NOTE_FLAGS)
     imgui.text_colored(AMBER, text)
     imgui.end()
@@ -75,4 +77,20 @@ def cursor_hint(app):
     imgui.pop_text_wrap_pos()
     a, b = imgui.get_window_pos(), imgui.get_window_size()
     app.ui_rects["hint"] = (a.x, a.y, a.x + b.x, a.y + b.y)
+    imgui.end()
+
+
+def scene_caption(app, text):
+    """The scene's suggestion, dim, wrapped to the free area's width at its top left."""
+    x0, y0, x1, _ = app.free_rect()
+    imgui.set_next_window_pos(imgui.ImVec2(x0 + 8, y0 + 8), imgui.Cond_.always.value)
+    imgui.set_next_window_bg_alpha(0.6)
+    imgui.set_next_window_size_constraints(imgui.ImVec2(0, 0), imgui.ImVec2(max(x1 - x0 - 16, 100), 200))
+    imgui.begin("##caption", None, NOTE_FLAGS)
+    imgui.push_text_wrap_pos(max(x1 - x0 - 32, 80))
+    imgui.text_colored(DIM, text)
+    imgui.pop_text_wrap_pos()
+    a, b = imgui.get_window_pos(), imgui.get_window_size()
+    app.ui_rects["caption"] = (a.x, a.y, a.x + b.x, a.y + b.y)
+    app.ui_values["caption"] = text
     imgui.end()
