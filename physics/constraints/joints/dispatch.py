@@ -8,7 +8,8 @@
   without bias it is the relax pass;
 - ``store_joints``: reaction force and torque of the last pass into the table,
   and breaking (returns how many joints broke).
-Rows are written by the kind's ``rows_*`` at the bodies' current positions.
+Rows are written by the kind's ``rows_*`` at the bodies' current positions, by ``refresh_rows``
+(and ``warm_start_joints``, which calls it): once after each move, for every pass until the next.
 """
 from __future__ import annotations
 
@@ -50,21 +51,23 @@ def joint_rows(B, J, JW, j, a, b):
 
 
 @row_kernel
-def warm_start_joints(c, B, J, JW):
-    for j in range(c.nj):
-        if JW.on[j]:
-            a = JW.ab[j, 0]
-            b = JW.ab[j, 1]
-            joint_rows(B, J, JW, j, a, b)
-            warm_start_rows(J, JW, j, a, b)
-
-
-@row_kernel
 def refresh_rows(c, B, J, JW):
-    """Every joint's rows at the bodies' current positions (before a position pass)."""
+    """Every joint's rows at the bodies' current positions.  A row's geometry depends on the
+    positions only (the arms, the separation, the angle, the effective mass), so the rows built
+    here serve every velocity pass until the bodies move again: this is the one place the kinds'
+    row builders are compiled into, and each is run once per move, not once per pass."""
     for j in range(c.nj):
         if JW.on[j]:
             joint_rows(B, J, JW, j, JW.ab[j, 0], JW.ab[j, 1])
+
+
+@row_kernel
+def warm_start_joints(c, B, J, JW):
+    """The rows at the current positions, then every row's accumulated impulse applied again."""
+    refresh_rows(c, B, J, JW)
+    for j in range(c.nj):
+        if JW.on[j]:
+            warm_start_rows(J, JW, j, JW.ab[j, 0], JW.ab[j, 1])
 
 
 @row_inline
@@ -74,13 +77,13 @@ def equality_rows_of(mask):
 
 @row_kernel
 def solve_joints(c, B, J, JW, JS, use_bias, inv_h, eq_global):
-    """One pass over every joint (see the module doc)."""
+    """One pass over every joint (see the module doc) on the rows of the last ``refresh_rows``
+    or ``warm_start_joints``: the caller refreshes them after the bodies moved."""
     for j in range(c.nj):
         if not JW.on[j]:
             continue
         a = JW.ab[j, 0]
         b = JW.ab[j, 1]
-        joint_rows(B, J, JW, j, a, b)
         kind = J.kind[j]
         if kind == MOTOR:
             solve_motor_joint(J, JW, j, a, b, inv_h)

@@ -86,6 +86,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
         if p.relax:
             coloured_pass(RELAX, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:
+                refresh_rows(c, B, J, JW)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, False, p.inv_h, eq_global)
         if bouncy:  # restitution works on the rows: hand them over and take its impulses back
             unpack(C, W, order, slots, R)

@@ -92,6 +92,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS):
         if p.relax:
             solve_contacts(c, p, SB, C, R, False, True)
             if J is not None:
+                refresh_rows(c, B, J, JW)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, False, p.inv_h, eq_global)
         if bouncy:
             restitution_contacts(c, p, SB, C, R, V0)  # in the sub-step of first touch
