@@ -154,10 +154,11 @@ class Editor:
             self.notify(f"{label} {self.edit_error}", error=True)
             return False
 
-    def refuse(self, text):
+    def refuse(self, text, at=None):
+        """Show ``text`` beside the field just drawn, or beside the field at window rect ``at``."""
         self.edit_error = text
         for cb in self.on_refusal:
-            cb()
+            cb(at)
 
     def drop_shape(self, name, p):
         """A palette button dropped at world point ``p``: the tool's default body there."""

@@ -13,6 +13,7 @@ from .inspector import InspectorSection
 from .plot_tab import PlotTab
 from ..scene_caption import caption_of
 from .notes import cursor_hint, messages, progress_window, scene_caption
+from .number_typing import NumberTyping
 from .refusal import RefusalBubble
 from .scene import SceneSection
 from .simulation import SimulationSection
@@ -43,6 +44,7 @@ class Panels:
         self.context = ContextMenu(app)
         self.dialogs = Dialogs(app)
         self.refusal = RefusalBubble(app)      # a refused field's message, beside the field
+        self.numbers = NumberTyping(app)       # letters typed into a number field: refused in words
         self.show_stats = True
 
     def ask(self, title, lines, buttons):

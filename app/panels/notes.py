@@ -8,8 +8,10 @@ from imgui_bundle import imgui
 
 from .style import AMBER, DIM, GREEN, RED
 
+# a note never takes focus as it appears: that took the keyboard from the field being typed in
 NOTE_FLAGS = (imgui.WindowFlags_.no_decoration | imgui.WindowFlags_.always_auto_resize |
-              imgui.WindowFlags_.no_inputs | imgui.WindowFlags_.no_saved_settings).value
+              imgui.WindowFlags_.no_inputs | imgui.WindowFlags_.no_saved_settings |
+              imgui.WindowFlags_.no_focus_on_appearing | imgui.WindowFlags_.no_nav).value
 
 
 def messages(app):

@@ -20,7 +20,10 @@ class RefusalBubble:
         self.field = None            # (x0, y0, x1, y1) of the refused field (window pixels, y down)
         app.editor.on_refusal.append(self.refused)
 
-    def refused(self):
+    def refused(self, at=None):
+        if at is not None:         # a refusal between frames (keys typed into a field) says where
+            self.field = at
+            return
         a, b = imgui.get_item_rect_min(), imgui.get_item_rect_max()
         self.field = (a.x, a.y, b.x, b.y)
 

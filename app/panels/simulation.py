@@ -5,6 +5,7 @@ from imgui_bundle import imgui
 
 from ..field_bounds import checked_gravity
 from .base import Section, record
+from .number_typing import typed
 from .style import AMBER, DIM, ENTER, RED
 from .timeline import timeline_slider
 
@@ -32,11 +33,13 @@ class SimulationSection(Section):
             sim.time_scale = v
         self.speed(sim)
         ch, hz = imgui.input_double("step rate (Hz)", 1.0 / w.dt, 10.0, 60.0, "%.1f", ENTER)
+        ch = typed(app, "step rate", ch)
         record(app, "sim:step_rate")
         if ch:
             app.editor.set_step_rate(hz)
         g = list(w.gravity)
         ch, g = imgui.input_float2("gravity", g, "%.2f", ENTER)
+        ch = typed(app, "gravity", ch)
         record(app, "sim:gravity")
         if ch:
             app.editor.set_world("gravity", tuple(g), lambda v: setattr(w, "gravity", checked_gravity(v)),

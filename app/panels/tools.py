@@ -5,6 +5,7 @@ from __future__ import annotations
 from imgui_bundle import imgui
 
 from .base import Section, record
+from .number_typing import typed
 from .style import DIM
 
 
@@ -53,9 +54,11 @@ class ToolsSection(Section):
         imgui.same_line()
         imgui.set_next_item_width(60)
         ch1, g = imgui.input_float("m##snapgrid", snap.grid, 0, 0, "%.2f", imgui.InputTextFlags_.enter_returns_true.value)
+        ch1 = typed(self.app, "snap grid", ch1)
         imgui.same_line()
         imgui.set_next_item_width(50)
         ch2, a = imgui.input_float("deg##snapangle", snap.angle, 0, 0, "%.0f", imgui.InputTextFlags_.enter_returns_true.value)
+        ch2 = typed(self.app, "snap angle", ch2)
         if ch1 or ch2:
             try:
                 snap.set_steps(g, a)
