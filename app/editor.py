@@ -281,7 +281,9 @@ class Editor:
 
     # -- selection and tools -----------------------------------------------------------
     def select(self, item, add=False):
-        """Select ``item`` (None: nothing); ``add`` toggles it in the current selection."""
+        """Select ``item`` (None: nothing); ``add`` toggles it in the current selection.  A laser
+        emitter picked before is let go (the inspector shows one thing)."""
+        self.tools["laser"].selected = None
         if item is None:
             self.selection = []
         elif add:

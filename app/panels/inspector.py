@@ -11,6 +11,7 @@ from .base import Section, record
 from .number_typing import typed
 from .fixture_inspector import body_text, draw_fixtures
 from .joint_inspector import draw_joint
+from .laser_inspector import draw_laser, selected_laser
 from .plot_tab import probe_checkboxes
 from ..render.colors import PALETTE
 from .style import DIM, ENTER
@@ -33,6 +34,10 @@ class InspectorSection(Section):
     def draw(self):
         app, ed = self.app, self.app.editor
         sel = [s for s in ed.selection if s.alive]
+        laser = selected_laser(app)
+        if not sel and laser is not None:
+            draw_laser(app, laser)
+            return
         if not sel:
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(DIM, "Nothing selected: click a body, a spring or a joint's pin.")
