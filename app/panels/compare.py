@@ -37,7 +37,8 @@ class CompareSection(Section):
 
     def choose(self, app):
         w = app.world
-        imgui.text_colored(DIM, f"Run this scene in other modes beside {w.solver}, live:")
+        wrapped(DIM, f"Run this scene in other modes beside {w.solver}, live:")
+        record(app, "compare:help")
         for m in (*[s for s in options.SOLVERS if s != w.solver], SAME_MODE):
             ch, on = imgui.checkbox(f"{m}##cmp", m in self.chosen)
             record(app, f"compare:mode:{m}")
@@ -85,7 +86,8 @@ class CompareSection(Section):
             if imgui.tree_node(f"settings##{id(lane)}"):
                 self.lane_settings(cmp, lane)
                 imgui.tree_pop()
-        imgui.text_colored(DIM, "Any edit restarts the rivals from the scene as it is then.")
+        wrapped(DIM, "Any edit restarts the rivals from the scene as it is then.")
+        record(app, "compare:help")
 
     @staticmethod
     def lane_line(color, label, note):
@@ -94,7 +96,7 @@ class CompareSection(Section):
         imgui.text(label)
         if note:
             imgui.same_line()
-            imgui.text_colored(AMBER, note)
+            wrapped(AMBER, note)
 
     def lane_settings(self, cmp, lane):
         settings = lane.world.settings_for(lane.solver)

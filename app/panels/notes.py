@@ -61,20 +61,30 @@ def progress_window(app):
     imgui.end()
 
 
+HINT_WRAP_PX = 340.0
+
+
 def cursor_hint(app):
-    """The editor's hint (why an input was refused) beside the point it is about."""
+    """The editor's hint (why an input was refused) beside the point it is about: right of and
+    above it, or left of / below it where it would run off the window ("no body her" at the right
+    edge)."""
     h = app.editor.current_hint()
     if h is None:
         app.ui_rects.pop("hint", None)
         return
     text, p, error = h
     sx, sy = app.camera.to_screen(p)
-    imgui.set_next_window_pos(imgui.ImVec2(float(sx) + 16, app.height - float(sy) - 10),
-                              imgui.Cond_.always.value, imgui.ImVec2(0.0, 1.0))
+    x, y = float(sx), app.height - float(sy)
+    pad = imgui.get_style().window_padding
+    size = imgui.calc_text_size(text, False, HINT_WRAP_PX)
+    left = x + 16 + size.x + 2 * pad.x > app.width - 4
+    below = y - 10 - size.y - 2 * pad.y < 4
+    pos = imgui.ImVec2(x - 16 if left else x + 16, y + 10 if below else y - 10)
+    imgui.set_next_window_pos(pos, imgui.Cond_.always.value, imgui.ImVec2(1.0 if left else 0.0, 0.0 if below else 1.0))
     imgui.set_next_window_bg_alpha(0.9)
-    imgui.set_next_window_size_constraints(imgui.ImVec2(0, 0), imgui.ImVec2(360, 400))
+    imgui.set_next_window_size_constraints(imgui.ImVec2(0, 0), imgui.ImVec2(HINT_WRAP_PX + 20, 400))
     imgui.begin("##hint", None, NOTE_FLAGS)
-    imgui.push_text_wrap_pos(340)
+    imgui.push_text_wrap_pos(HINT_WRAP_PX)
     imgui.text_colored(RED if error else AMBER, text)
     imgui.pop_text_wrap_pos()
     a, b = imgui.get_window_pos(), imgui.get_window_size()
