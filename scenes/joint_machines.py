@@ -223,4 +223,4 @@ def walker():
                                        "distance joints each (10 Hz) walk the chassis over a floor with a few "
                                        "balls.  Legs of one side would pass each other in depth: force-free motor "
                                        "joints stop them colliding.",
-                 bodies, joints=joints, camera={"center": [8.0, 6.0], "zoom": 24.0}, sleeping=False)
+                 bodies, joints=joints, camera={"center": [12.5, 6.0], "zoom": 22.0}, sleeping=False)
