@@ -8,6 +8,7 @@ from physics import options
 
 from ..compare import LANE_COLORS, MAX_RIVALS
 from .base import Section, record, wrapped
+from .number_typing import typed
 from .solver import setting_widget
 from .style import AMBER, DIM, RED
 
@@ -102,6 +103,7 @@ class CompareSection(Section):
         settings = lane.world.settings_for(lane.solver)
         for name, decl in settings.declared().items():
             ch, v = setting_widget(f"{name}##{id(lane)}", decl, settings[name])
+            ch = typed(self.app, name, ch, integer=isinstance(decl.default, int))
             if ch:
                 try:
                     cmp.set_setting(lane, name, v)

@@ -29,6 +29,8 @@ class SimulationSection(Section):
         timeline_slider(app, f"steps {w.steps}   bodies {len(app.rd_ids)}")
         ch, v = imgui.slider_float("time scale", sim.time_scale, 0.05, 4.0, "%.2fx",
                                    imgui.SliderFlags_.logarithmic.value)
+        ch = typed(app, "time scale", ch)       # Ctrl+click types a value
+        record(app, "sim:time_scale")
         if ch:
             sim.time_scale = v
         self.speed(sim)

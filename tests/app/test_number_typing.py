@@ -1,10 +1,12 @@
 """Letters typed into a number field are refused in words beside the field, not dropped without a
-word: "abc" in the step rate, and in a body's density in the inspector."""
+word: "abc" in the step rate, "fast" in the time scale slider (Ctrl+click types into a slider),
+and "abc" in a body's density in the inspector."""
 from __future__ import annotations
 
 import pytest
 
 from sandbox_pixels import red_text_pixels
+from test_compare import centre
 from test_text_fields import fields_scene, type_into
 from test_tools import body
 
@@ -36,6 +38,15 @@ def test_letters_in_number_fields_are_refused_beside_the_field(launch, tmp_path)
     type_into(app, st["ui_rects"]["sim:step_rate"], "120")
     st = app.wait(lambda s: s["dt"] == pytest.approx(1 / 120), 10, "the step rate taken")
     assert st["edit_error"] == ""
+    # a slider typed into (Ctrl+click) says it too
+    app.xdo("keydown", "ctrl")
+    app.click(*map(int, centre(st["ui_rects"]["sim:time_scale"])))
+    app.xdo("keyup", "ctrl")
+    app.settle()
+    app.xdo("type", "--delay", "30", "fast")
+    app.key("Return")
+    st = app.wait(lambda s: s["edit_error"].startswith('time scale: "fast"'), 10, "the time scale refusal")
+    assert app.settle()["time_scale"] == pytest.approx(1.0)
     # the inspector's fields say it too, with their own name
     b = body(st, "b")
     app.click(*map(int, b["screen"]))
