@@ -17,6 +17,8 @@ def parse_args(argv=None):
     ap.add_argument("--tour", nargs="+", metavar="SCENE", default=None,
                     help="then open each SCENE in turn, --frames frames each; --screenshot is then a folder "
                          "that receives <scene>.png and <scene>.json per scene (app/tour.py); exits after the last")
+    ap.add_argument("--tour-seconds", type=float, default=0.0,
+                    help="with --tour: also run each scene this many simulated seconds before its screenshot")
     ap.add_argument("--benchmark-frames", type=int, default=None,
                     help="run N frames unthrottled, one physics step each, and print the frame-time split")
     ap.add_argument("--plot", action="store_true",
@@ -56,7 +58,7 @@ def main(argv=None) -> int:
         frames = args.benchmark_frames + 10
     if args.tour:
         from .tour import Tour
-        Tour(args.tour, frames or 120, args.screenshot or ".").attach(loop)
+        Tour(args.tour, frames or 120, args.screenshot or ".", args.tour_seconds).attach(loop)
     elif args.status or args.control or args.screenshot or args.exit:
         from .automation import Automation
         Automation(args.status, args.control, frames, args.screenshot, args.exit).attach(loop)

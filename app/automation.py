@@ -95,7 +95,7 @@ def status(app) -> dict:
         "user_scenes": [str(p) for p in scene_files(user_scenes_dir())],
         "ui_values": app.ui_values, "awake": int(np.count_nonzero(w.state()["awake"])) if app.warmup.ready else 0,
         "speed": app.sim.speed, "hint": app.editor.hint_text(), "scene_keys": app.input.scene_keys,
-        "dt": w.dt, "gl_config": app.gl_config,
+        "dt": w.dt, "time_scale": app.sim.time_scale, "gl_config": app.gl_config,
         "bound": {"lo": app.bound.lo.tolist(), "hi": app.bound.hi.tolist(), "enabled": app.bound.enabled,
                   "shown": app.bound.shown},
         "plots": [p.last for p in app.panels.stats.plots] if app.panels.show_stats else [],

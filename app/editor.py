@@ -154,10 +154,11 @@ class Editor:
             self.notify(f"{label} {self.edit_error}", error=True)
             return False
 
-    def refuse(self, text):
+    def refuse(self, text, at=None):
+        """Show ``text`` beside the field just drawn, or beside the field at window rect ``at``."""
         self.edit_error = text
         for cb in self.on_refusal:
-            cb()
+            cb(at)
 
     def drop_shape(self, name, p):
         """A palette button dropped at world point ``p``: the tool's default body there."""
@@ -280,7 +281,9 @@ class Editor:
 
     # -- selection and tools -----------------------------------------------------------
     def select(self, item, add=False):
-        """Select ``item`` (None: nothing); ``add`` toggles it in the current selection."""
+        """Select ``item`` (None: nothing); ``add`` toggles it in the current selection.  A laser
+        emitter picked before is let go (the inspector shows one thing)."""
+        self.tools["laser"].selected = None
         if item is None:
             self.selection = []
         elif add:

@@ -56,8 +56,9 @@ def content_box(world):
 
 def focus_box(world):
     """What a scene is about: its moving bodies' extent grown by a tenth of its size (at least 1.5 m) on
-    every side, kept within the whole scene; the whole scene when nothing moves.  A long static
-    ground or terrain should not shrink a card house to a few pixels."""
+    every side, down to the ground they will land on, kept within the whole scene; the whole scene
+    when nothing moves.  A long static ground or terrain should not shrink a card house to a few
+    pixels, and bodies dropped from high up should not fall out of the view they opened in."""
     rd = world.render_data()
     whole = content_box(world)
     if whole is None:
@@ -68,8 +69,17 @@ def focus_box(world):
     if not len(box):
         return whole
     lo, hi = box[:, :2].min(0), box[:, 2:].max(0)
+    lo[1] = min(lo[1], ground_below(rd.aabb[~moving], lo, hi))
     grow = np.maximum(0.1 * (hi - lo), 1.5)
     return np.maximum(lo - grow, whole[0]), np.minimum(hi + grow, whole[1])
+
+
+def ground_below(static_boxes, lo, hi) -> float:
+    """The lowest top of the static bodies under the box [lo, hi] (overlapping it in x, their top
+    below its bottom): where what falls from the box comes to rest; ``lo[1]`` when there is none."""
+    b = static_boxes[np.all(np.isfinite(static_boxes), axis=1)]
+    under = (b[:, 0] <= hi[0]) & (b[:, 2] >= lo[0]) & (b[:, 3] <= lo[1])
+    return float(b[under, 3].min()) if np.any(under) else float(lo[1])
 
 
 def fit(camera, box, regions) -> None:

@@ -156,6 +156,11 @@ class SceneInput:
                 return
         self.editor.notify("drop a .json scene file", error=True)
 
+    def on_text(self, text):
+        # imgui has taken the text already (its handler is above this one); a number field's
+        # dropped letters are said, not lost
+        self.app.panels.numbers.on_text(text)
+
     def on_key_press(self, symbol, modifiers):
         io = imgui.get_io()
         if io.want_capture_keyboard or not self.app.warmup.ready:

@@ -1,4 +1,4 @@
-"""The laser tool's undoable edits: place, remove and re-aim a laser (``app.lasers``).  Like the
+"""The laser tool's undoable edits: place, remove, re-aim and move a laser (``app.lasers``).  Like the
 other commands, ``app`` is the :class:`app.editor.Editor`; a laser on a body refers to it through
 its Ref, so a body deleted and brought back by undo still carries its laser."""
 from __future__ import annotations
@@ -53,3 +53,17 @@ class AimLaser(Command):
 
     def undo(self, app):
         self.laser.angle = self.old
+
+
+class MoveLaser(Command):
+    """Put ``laser`` where ``spec`` says (``Laser.spec()``'s keys: its body, point and angle)."""
+
+    def __init__(self, laser, spec, old):
+        self.laser, self.spec, self.old = laser, dict(spec), dict(old)
+        self.label = "move laser"
+
+    def do(self, app):
+        self.laser.set_spec(self.spec)
+
+    def undo(self, app):
+        self.laser.set_spec(self.old)

@@ -29,6 +29,7 @@ class Laser:
         self.angle = float(angle)
         self.index = index
         self.path = np.zeros((0, 2))     # the beam's points, emitter first (traced each frame)
+        self.hits: list = []             # the bodies its segments end on, in turn (traced with it)
 
     def body(self):
         """The live body the emitter rides on, or None (fixed, or its body is deleted)."""
@@ -53,6 +54,34 @@ class Laser:
         """What a command needs to make this laser again."""
         return {"ref": self.ref, "local": self.local, "angle": self.angle, "index": self.index}
 
+    def set_spec(self, spec: dict):
+        self.ref, self.local, self.angle, self.index = spec["ref"], spec["local"], spec["angle"], spec["index"]
+
+    def readout(self) -> dict:
+        """What the inspector says of the beam as last traced: its length up to its last hit (m),
+        its bounces (the points it was mirrored at), the bodies it meets in turn, and whether it
+        ends in the open (rather than on a surface)."""
+        pts = self.path
+        n_hit = len(self.hits)
+        length = float(np.sum(np.hypot(*np.diff(pts[:n_hit + 1], axis=0).T))) if n_hit else 0.0
+        return {"length": length, "bounces": max(len(pts) - 2, 0), "hits": list(self.hits),
+                "open": len(pts) > n_hit + 1}
+
+
+def moved_spec(world, refs, laser, p) -> dict:
+    """``laser`` moved to world point ``p``, pointing the same way: it rides on the body there (the
+    first body under ``p``) or is fixed in the world when there is none."""
+    from .picking import body_at
+    _, d = laser.origin_direction()
+    try:
+        b = body_at(world, tuple(p))
+    except ValueError:
+        b = None
+    if b is None:
+        return {"ref": None, "local": (float(p[0]), float(p[1])), "angle": aim_angle(None, d), "index": None}
+    index = next((k for k, x in enumerate(world.bodies) if x.id == b.id), None)
+    return {"ref": refs.of(b), "local": tuple(b.world_to_local(tuple(p))), "angle": aim_angle(b, d), "index": index}
+
 
 def aim_angle(body, direction) -> float:
     """The emitter angle (in ``body``'s frame, or the world's for None) of world ``direction``."""
@@ -66,14 +95,19 @@ def reflect(d, n):
 
 
 def trace(world, origin, direction, skip_body=None, segments=MAX_SEGMENTS, reach=REACH):
+    """The beam's points: ``trace_hits``' first part."""
+    return trace_hits(world, origin, direction, skip_body, segments, reach)[0]
+
+
+def trace_hits(world, origin, direction, skip_body=None, segments=MAX_SEGMENTS, reach=REACH):
     """The beam from ``origin`` along unit ``direction``: its points (K + 1, 2) for K <= ``segments``
-    segments.  Each segment ends at the first fixture it meets (its outward normal mirrors the
+    segments, and the bodies its segments end on (one a segment that meets a fixture).  Each segment ends at the first fixture it meets (its outward normal mirrors the
     beam) or after ``reach`` metres in the air; the first segment passes through ``skip_body``
     (the emitter's own body: an emitter inside it shines out of it).  A beam that starts inside
     a fixture (normal (0, 0)) stops there."""
     p = np.asarray(origin, dtype=np.float64)
     d = np.asarray(direction, dtype=np.float64)
-    pts = [p]
+    pts, bodies = [p], []
     for k in range(segments):
         end = p + reach * d
         hit = _first_hit(world, p, end, skip_body if k == 0 else None)
@@ -82,12 +116,13 @@ def trace(world, origin, direction, skip_body=None, segments=MAX_SEGMENTS, reach
             break
         q = np.array(hit.point)
         pts.append(q)
+        bodies.append(hit.body)
         n = np.array(hit.normal)
         if not n.any():
             break
         d = reflect(d, n)
         p = q + EPS * n
-    return np.array(pts)
+    return np.array(pts), bodies
 
 
 def _first_hit(world, p, end, skip_body):
@@ -114,9 +149,9 @@ class Lasers:
         for lz in self.items:
             if lz.shown:
                 p, d = lz.origin_direction()
-                lz.path = trace(world, p, d, lz.body())
+                lz.path, lz.hits = trace_hits(world, p, d, lz.body())
             else:
-                lz.path = np.zeros((0, 2))
+                lz.path, lz.hits = np.zeros((0, 2)), []
 
     def near(self, p, radius):
         """The shown laser whose emitter is nearest world point ``p`` within ``radius`` m, or None."""
@@ -167,5 +202,11 @@ class Lasers:
 
     def describe(self) -> list:
         """For the status file: each laser's body id (None: fixed), local point, angle and beam."""
-        return [{"body": None if lz.ref is None or lz.ref.obj is None else lz.ref.obj.id, "local": list(lz.local),
-                 "angle": lz.angle, "shown": lz.shown, "path": lz.path.tolist()} for lz in self.items]
+        out = []
+        for lz in self.items:
+            r = lz.readout()
+            out.append({"body": None if lz.ref is None or lz.ref.obj is None else lz.ref.obj.id,
+                        "local": list(lz.local), "angle": lz.angle, "shown": lz.shown, "path": lz.path.tolist(),
+                        "length": r["length"], "bounces": r["bounces"], "hits": [b.id for b in r["hits"]],
+                        "open": r["open"]})
+        return out

@@ -1,6 +1,7 @@
 """``--tour SCENE ...``: after the launch scene, open each given scene in turn in the same window.
 
-Each scene (the launch scene first) runs ``--frames`` frames once its kernels are ready; then its
+Each scene (the launch scene first) runs ``--frames`` frames once its kernels are ready (and, with
+``--tour-seconds``, until its world has run that many simulated seconds); then its
 last frame is saved as ``<stem>.png`` in the ``--screenshot`` folder, beside ``<stem>.json``, the
 status the tests read (automation.status) with the OpenGL and scene errors of that scene alone.
 The next scene is opened the way the scene panel opens one (SceneFiles.open_scene); after the last
@@ -11,13 +12,29 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import numpy as np
+
 from .automation import screenshot, status
 
 
+def framing(app) -> dict:
+    """Where the moving bodies are drawn: how many there are and how many have their centre inside
+    the free area (window pixels), for scenes of any size (the status lists bodies only up to 300)."""
+    rd = app.world.render_data()
+    moving = rd.kind != 1
+    pos = rd.center[moving]
+    x0, y0, x1, y1 = app.free_rect()
+    sp = app.camera.to_screen(pos) if len(pos) else np.zeros((0, 2))
+    sx, sy = sp[:, 0], app.height - sp[:, 1]
+    inside = int(np.count_nonzero((x0 <= sx) & (sx <= x1) & (y0 <= sy) & (sy <= y1)))
+    return {"moving": int(len(pos)), "inside_free": int(inside)}
+
+
 class Tour:
-    def __init__(self, scenes, frames: int, out_dir):
+    def __init__(self, scenes, frames: int, out_dir, seconds: float = 0.0):
         self.queue = [Path(s) for s in scenes]
         self.frames = frames
+        self.seconds = seconds
         self.out = Path(out_dir)
         self.out.mkdir(parents=True, exist_ok=True)
         self._gl0 = 0
@@ -33,7 +50,8 @@ class Tour:
         return Path(path).stem if path else "untitled"
 
     def before_swap(self, loop):
-        if self._shot is None and loop.ready_frames >= self.frames:
+        played = loop.window.world.time >= self.seconds
+        if self._shot is None and loop.ready_frames >= self.frames and played:
             self._shot = self.out / f"{self._stem(loop.window)}.png"
             screenshot(loop.window, self._shot)
 
@@ -44,6 +62,7 @@ class Tour:
         st = status(w)
         st["gl_errors"] = list(w.gl_errors[self._gl0:])
         st["scene_errors"] = list(w.files.errors)
+        st["framing"] = framing(w)
         self._shot.with_suffix(".json").write_text(json.dumps(st))
         self._shot = None
         if not self.queue:

@@ -300,8 +300,10 @@ class Sandbox(pyglet.window.Window):
 
     def draw_ui(self, ready):
         imgui.new_frame()
+        self.panels.numbers.begin_frame()
         if self.show_ui or not ready:
             self.panels.draw()
+        self.panels.numbers.end_frame()
         if ready:
             self.compare_view.labels()
         if self.sim.compiling_note and ready:

@@ -19,9 +19,10 @@ def no_collide(a, b):
 
 
 # -- the car -----------------------------------------------------------------------------------
-def _terrain(x0=-24.0, x1=80.0, step=2.0):
+def _terrain(x0=-22.0, x1=10.0, step=2.0):
     """Rolling hills as convex quads between the points of a height profile (flat where it
-    starts), and a wall at the far end."""
+    starts), and a wall at the far end: a course short enough to stay in one view, so the car
+    climbs the hills in sight and stops against the wall."""
     xs = [x0 + step * i for i in range(int((x1 - x0) / step) + 1)]
 
     def h(x):
@@ -56,9 +57,9 @@ def car():
                             spring_hertz=hz, spring_damping_ratio=0.7, lower=-0.25, upper=0.25, **drive))
     return scene("Car", "A car on wheel joints: a chassis on two disc wheels with sprung suspension (4 Hz rear, "
                         "5 Hz front, damping ratio 0.7, 0.25 m travel each way), the rear wheel driven by a "
-                        "motor (12 rad/s, up to 25 N m), over rolling hills of convex static quads.  Edit the "
-                        "motor speed in the inspector to brake or reverse.",
-                 bodies, joints=joints, camera={"center": [-10.0, 0.5], "zoom": 40.0})
+                        "motor (12 rad/s, up to 25 N m), over rolling hills of convex static quads to a wall.  "
+                        "Try selecting the rear axle and setting a negative motor speed to drive back.",
+                 bodies, joints=joints, camera={"center": [-5.5, 1.0], "zoom": 26.0})
 
 
 # -- the ragdoll -------------------------------------------------------------------------------
@@ -194,11 +195,13 @@ def _leg(tag, sx, phase, off):
 
 def walker():
     """Theo Jansen's linkage: a motor turns a crank wheel on a chassis; six legs (three crank phases
-    120 degrees apart on each side) walk it over a floor strewn with balls."""
+    120 degrees apart on each side) walk it over a floor towards a few balls."""
     off = (0.0, 8.0)
-    bodies = [static(box(100.0, 1.0), 0.0, -0.5, "ground", friction=0.6),
-              static(box(1.0, 10.0), -50.5, 5.0, "wall_left"), static(box(1.0, 10.0), 50.5, 5.0, "wall_right")]
-    bodies += [body(circle(0.25), -40.0 + 2.0 * i, 0.25, f"ball{i}") for i in range(40)]
+    bodies = [static(box(60.0, 1.0), 0.0, -0.5, "ground", friction=0.6),
+              static(box(1.0, 10.0), -30.5, 5.0, "wall_left"), static(box(1.0, 10.0), 30.5, 5.0, "wall_right")]
+    # a few balls just ahead of it (not strewn over the whole floor: framing them all made the
+    # walker a few pixels tall)
+    bodies += [body(circle(0.25), 14.0 + 1.5 * i, 0.25, f"ball{i}") for i in range(8)]
     pivot = (off[0], off[1] + _CRANK)
     bodies.append(body(box(5.0, 2.0), *pivot, "chassis"))
     bodies.append(body(circle(1.6), *pivot, "wheel"))
@@ -217,7 +220,7 @@ def walker():
                 joints += [no_collide(a, b) for a in legs[i] for b in legs[k]]
     return scene("Theo Jansen walker", "Theo Jansen's strandbeest linkage after Box2D's sample: a motor (2 rad/s, "
                                        "400 N m) turns the crank wheel, six legs of two triangles and four soft "
-                                       "distance joints each (10 Hz) walk the chassis over a floor strewn with "
+                                       "distance joints each (10 Hz) walk the chassis over a floor with a few "
                                        "balls.  Legs of one side would pass each other in depth: force-free motor "
                                        "joints stop them colliding.",
-                 bodies, joints=joints, camera={"center": [0.0, 6.0], "zoom": 22.0}, sleeping=False)
+                 bodies, joints=joints, camera={"center": [12.5, 6.0], "zoom": 22.0}, sleeping=False)

@@ -49,7 +49,7 @@ def double_pendulum():
     return scene("Double pendulum", "Two frictionless double pendulums (two 1 m rods on hinges each) released "
                                     "horizontal, the right one 0.001 rad lower.  They follow each other for a "
                                     "few seconds and then part: the double pendulum is chaotic.",
-                 bodies, joints=joints, camera={"center": [0.0, 5.0], "zoom": 55.0})
+                 bodies, joints=joints, camera={"center": [0.0, 6.8], "zoom": 75.0})
 
 
 def newtons_cradle():
@@ -190,7 +190,8 @@ def joint_grid(n=20):
     return scene(f"Joint grid {n}", f"Box2D v3's joint_grid benchmark at its debug size: {n} x {n} discs "
                                    f"(radius 0.4 m, 1 m apart) hinged to their neighbours, {len(joints)} "
                                    "revolute joints, hanging from seven static discs in the top row.  Sleeping "
-                                   "is off, as in the benchmark.",
+                                   "is off, as in the benchmark.  Try dragging a disc of the bottom row and "
+                                   "throwing the net.",
                  bodies, joints=joints, camera={"center": [0.0, 0.6 * n], "zoom": 600.0 / (n * 1.6)},
                  sleeping=False)
 

@@ -89,7 +89,8 @@ def card_house():
             bodies.append(body(box(width, t), 0.0, top + 0.5 * t, f"floor{level}", friction=0.9))
             y = top + t
     return scene("Card house", "A four-storey house of cards: leaning pairs held by friction (0.9) and by "
-                               "each other, with flat cards between storeys.  Nudge one.",
+                               "each other, with flat cards between storeys.  Try dragging out one card of the "
+                               "bottom storey and watch the house fall.",
                  bodies, camera={"center": [0.0, 2.5], "zoom": 110.0})
 
 
@@ -148,7 +149,7 @@ def friction_ramp():
     return scene("Friction ramp", "Three 25 degree ramps (friction 1) with one box each: friction 0.05, 0.2 "
                                   "and 0.8.  Friction combines by the geometric mean (0.22, 0.45, 0.89 against "
                                   "tan 25 = 0.47): the first slides fast, the second creeps, the third sticks.",
-                 bodies, camera={"center": [1.0, 8.0], "zoom": 32.0})
+                 bodies, camera={"center": [1.5, 8.8], "zoom": 22.0})
 
 
 def restitution_row():
@@ -232,7 +233,7 @@ def soft_body():
                         springs.append(spring(nm(b, i, j), nm(b, ii, jj), [0, 0], [0, 0], 30.0, 0.1))
     return scene("Soft body", "Two blobs of 25 small discs each, tied to their neighbours by springs "
                               "(structural and shear, 30 N/m), dropping onto a wedge and the ground between two walls.",
-                 bodies, springs, camera={"center": [-1.0, 3.0], "zoom": 55.0})
+                 bodies, springs, camera={"center": [0.0, 3.0], "zoom": 28.0})
 
 
 def mass_ratio():
@@ -245,7 +246,8 @@ def mass_ratio():
     bodies.append(body(box(1.0, 1.0), 6.0, 1.5, "tower1", density=10.0))
     bodies.append(body(box(1.0, 1.0), 6.0, 2.5, "tower2", density=100.0))
     return scene("Mass ratio", "A 100 kg box on a 1 kg box, a 100 kg 2 m box on a 1 kg 0.6 m box, and a "
-                               "1 / 10 / 100 kg tower.  Iterative solvers struggle with large mass ratios.",
+                               "1 / 10 / 100 kg tower.  Iterative solvers struggle with large mass ratios.  Try "
+                               "another solver mode (Solver panel) and see which keep the heavy boxes on top.",
                  bodies, camera={"center": [1.5, 2.0], "zoom": 60.0})
 
 
@@ -274,7 +276,7 @@ def rain():
                            restitution=r(rng.choice((0.0, 0.0, 0.2)))))
     return scene("Rain", "1000 boxes, discs and polygons of mixed sizes (0.3 to 0.9 m) raining into a "
                          "40 m wide open static container.",
-                 bodies, camera={"center": [0.0, 14.0], "zoom": 18.0})
+                 bodies, camera={"center": [0.0, 12.7], "zoom": 18.0})
 
 
 def default():

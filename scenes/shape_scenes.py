@@ -46,7 +46,8 @@ def cup(h):
         bodies.append(h.body({"circle": 0.2}, -1.0 + 0.5 * (k % 5), 0.6 + 0.5 * (k // 5), f"ball{k}",
                              restitution=0.2))
     return h.scene("Cup", "A concave cup (drawn as one outline, split into convex pieces on load) holding ten "
-                          "balls on the ground.", bodies, camera={"center": [0.0, 1.5], "zoom": 120.0})
+                          "balls on the ground.  Try dragging the cup by its rim: the balls ride "
+                          "inside the one body.", bodies, camera={"center": [0.0, 1.5], "zoom": 120.0})
 
 
 def capsules(h):
@@ -79,27 +80,41 @@ def terrain(h):
                    bodies, camera={"center": [0.0, 1.0], "zoom": 20.0})
 
 
-def compounds(h, columns=10, rows=40):
-    """Box2D's compounds benchmark (shared/benchmarks.c, CreateCompounds) at its debug size."""
-    grid = 1.0
-    ground = [{"polygon": _offset_box(0.55 * grid, 0.5 * grid, -40.0 * grid + i * grid, 0.0, h.r)} for i in range(81)]
-    for x in (-40.0 * grid, 40.0 * grid):
-        ground += [{"polygon": _offset_box(0.5 * grid, 0.55 * grid, x, grid + i * grid, h.r)} for i in range(100)]
-    ground.append({"segment": [[-800.0, -80.0], [800.0, -80.0]]})
-    left = {"polygon": [[-1.0, 0.0], [0.5, 1.0], [0.0, 2.0]], "friction": 0.5}
-    right = {"polygon": [[1.0, 0.0], [-0.5, 1.0], [0.0, 2.0]], "friction": 0.5}
+def _compound_kinds(h):
+    """Six bodies of several fixtures each, about 2 m across: two triangles (Box2D's compounds
+    body, doubled), an L, a T, a dumbbell of two discs on a bar, a hammer and a cross."""
+    box = (lambda hw, hh, cx=0.0, cy=0.0: {"polygon": _offset_box(hw, hh, cx, cy, h.r)})
+    disc = (lambda rad, cx, cy: {"circle": {"radius": rad, "offset": [cx, cy]}})
+    return {
+        "twins": [{"polygon": [[-1.5, -1.0], [0.75, 0.5], [0.0, 2.0]]}, {"polygon": [[1.5, -1.0], [-0.75, 0.5], [0.0, 2.0]]}],
+        "ell": [box(1.0, 0.25, 0.0, -0.75), box(0.25, 1.0, -0.75, 0.0)],
+        "tee": [box(1.0, 0.25, 0.0, 0.75), box(0.25, 0.75, 0.0, -0.25)],
+        "dumbbell": [disc(0.45, -0.8, 0.0), disc(0.45, 0.8, 0.0), box(0.8, 0.12)],
+        "hammer": [box(0.15, 0.9, 0.0, -0.2), box(0.55, 0.3, 0.0, 0.85)],
+        "cross": [box(0.9, 0.2), box(0.2, 0.9)],
+    }
+
+
+def compounds(h, columns=6, rows=5):
+    """Thirty bodies of two or three fixtures each (six kinds) falling into a U of box fixtures on
+    one static ground body: big enough to see that each is one rigid body of several shapes."""
+    ground = [{"polygon": _offset_box(10.0, 0.5, 0.0, -0.5, h.r)},
+              {"polygon": _offset_box(0.5, 5.0, -10.5, 4.0, h.r)}, {"polygon": _offset_box(0.5, 5.0, 10.5, 4.0, h.r)}]
     bodies = [{"name": "ground", "kind": "static", "shapes": ground, "position": [0.0, 0.0]}]
-    shift, extray, side = 2.0, 0.25, 0.25
-    centerx, centery, y0 = shift * columns / 2.0 - 1.0, 1.15 / 2.0, 5.0
-    for i in range(columns):
-        x = i * shift - centerx
-        for j in range(rows):
-            y = j * (shift + extray) + centery + y0
-            bodies.append({"shapes": [left, right], "position": [h.r(x + side), h.r(y)], "friction": 0.5})
-            side = -side
-    return h.scene("Compounds", f"Box2D's compounds benchmark: {columns * rows} bodies of two triangles each "
-                                "falling into a U of box fixtures on one static ground body.",
-                   bodies, camera={"center": [0.0, 30.0], "zoom": 8.0})
+    kinds = _compound_kinds(h)
+    names = list(kinds)
+    rng = random.Random(7)
+    for j in range(rows):
+        for i in range(columns):
+            kind = names[(i + 2 * j) % len(names)]
+            x, y = -7.5 + 3.0 * i + (0.6 if j % 2 else 0.0), 2.0 + 3.2 * j
+            bodies.append({"name": f"{kind}{j}_{i}", "shapes": kinds[kind], "position": [h.r(x), h.r(y)],
+                           "angle": h.r(rng.uniform(-0.6, 0.6)), "friction": 0.5})
+    return h.scene("Compounds", f"{columns * rows} compound bodies of six kinds (two triangles, an L, a T, a "
+                                "dumbbell of two discs on a bar, a hammer, a cross), each one rigid body of "
+                                "several fixtures, falling into a U of box fixtures on one static ground body.  "
+                                "Try selecting one: the whole body lights up, and it tumbles as one.",
+                   bodies, camera={"center": [0.0, 6.5], "zoom": 36.0})
 
 
 def scenes(h) -> dict:

@@ -7,7 +7,8 @@ fixture fields; version 1 files load exactly as before.
   whose 600-step end states tests/test_shipped_scenes.py compares with the record.  The
   tumbler is the exception: it was rebuilt as a real drum (issue 13), so only its version 1
   file's own world is checked.  soft_body's version 1 file holds the two walls its scene gained
-  later (plain static boxes, which version 1 writes the same way).
+  later (plain static boxes, which version 1 writes the same way); car's and walker's hold their
+  later courses (one body, one shape each: version 1 writes them the same way).
 - a world using every new feature saves, reloads and saves again to the same text and the
   same world bit for bit;
 - every bad new field is refused with its JSON path.

@@ -8,6 +8,7 @@ from physics import options
 
 from ..compare import LANE_COLORS, MAX_RIVALS
 from .base import Section, record, wrapped
+from .number_typing import typed
 from .solver import setting_widget
 from .style import AMBER, DIM, RED
 
@@ -37,7 +38,8 @@ class CompareSection(Section):
 
     def choose(self, app):
         w = app.world
-        imgui.text_colored(DIM, f"Run this scene in other modes beside {w.solver}, live:")
+        wrapped(DIM, f"Run this scene in other modes beside {w.solver}, live:")
+        record(app, "compare:help")
         for m in (*[s for s in options.SOLVERS if s != w.solver], SAME_MODE):
             ch, on = imgui.checkbox(f"{m}##cmp", m in self.chosen)
             record(app, f"compare:mode:{m}")
@@ -85,7 +87,8 @@ class CompareSection(Section):
             if imgui.tree_node(f"settings##{id(lane)}"):
                 self.lane_settings(cmp, lane)
                 imgui.tree_pop()
-        imgui.text_colored(DIM, "Any edit restarts the rivals from the scene as it is then.")
+        wrapped(DIM, "Any edit restarts the rivals from the scene as it is then.")
+        record(app, "compare:help")
 
     @staticmethod
     def lane_line(color, label, note):
@@ -94,12 +97,13 @@ class CompareSection(Section):
         imgui.text(label)
         if note:
             imgui.same_line()
-            imgui.text_colored(AMBER, note)
+            wrapped(AMBER, note)
 
     def lane_settings(self, cmp, lane):
         settings = lane.world.settings_for(lane.solver)
         for name, decl in settings.declared().items():
             ch, v = setting_widget(f"{name}##{id(lane)}", decl, settings[name])
+            ch = typed(self.app, name, ch, integer=isinstance(decl.default, int))
             if ch:
                 try:
                     cmp.set_setting(lane, name, v)

@@ -9,6 +9,8 @@ from imgui_bundle import imgui
 from .base import record
 from .style import AMBER, DIM, RED
 
+WRAP_PX = 520.0       # dialog text wraps at this width (a failed load's lines name long paths)
+
 
 class Dialogs:
     def __init__(self, app):
@@ -48,11 +50,13 @@ class Dialogs:
         if not opened:
             return
         _, lines, buttons = self.question
+        imgui.push_text_wrap_pos(imgui.get_cursor_pos_x() + WRAP_PX)
         for i, line in enumerate(lines):
             if i:
                 imgui.text_colored(AMBER, line)
             else:
                 imgui.text(line)
+        imgui.pop_text_wrap_pos()
         chosen = None
         for i, (label, fn) in enumerate(buttons):
             if i:
@@ -104,10 +108,14 @@ class Dialogs:
         flags = (imgui.WindowFlags_.always_auto_resize | imgui.WindowFlags_.no_saved_settings |
                  imgui.WindowFlags_.no_collapse).value
         imgui.begin("Scene not loaded###sceneerr", None, flags)
-        imgui.push_text_wrap_pos(imgui.get_cursor_pos_x() + 520)
+        imgui.push_text_wrap_pos(imgui.get_cursor_pos_x() + WRAP_PX)
         imgui.text_colored(RED, "Could not load the scene; the current one stays.")
+        imgui.begin_group()
         for line in errors[:20]:
-            imgui.bullet_text(line)
+            imgui.bullet()                 # bullet_text does not wrap: a long path ran off the dialog
+            imgui.text_wrapped(line)
+        imgui.end_group()
+        record(app, "scene_errors:lines")
         if len(errors) > 20:
             imgui.text_colored(DIM, f"... and {len(errors) - 20} more")
         imgui.pop_text_wrap_pos()

@@ -8,6 +8,7 @@ from physics.tuning import METRICS
 
 from ..find_settings import Finder, apply_command, scene_copy
 from .base import record, wrapped
+from .number_typing import typed
 from .style import DIM, ENTER, GREEN, RED
 
 #: a few seconds on a small scene (issue 19's CLI default is 600 steps: minutes in the window)
@@ -81,10 +82,12 @@ class FindSettings:
             imgui.end_combo()
         ch, v = imgui.input_float(f"budget ({UNITS.get(self.metric, 'm')})##find", self.budget, 0.0, 0.0,
                                   "%.4g", ENTER)
+        ch = typed(self.app, "budget", ch)
         record(self.app, "find:budget")
         if ch and v > 0:
             self.budget = v
         ch, n = imgui.input_int("steps##find", self.steps, 60, 600, ENTER)
+        ch = typed(self.app, "steps", ch, integer=True)
         record(self.app, "find:steps")
         if ch:
             self.steps = max(16, min(int(n), 6000))

@@ -12,6 +12,7 @@ import physics
 from ..commands import SetFixture
 from ..gluing import glue_selection, unglue_selection
 from .base import record, record_window
+from .number_typing import typed
 from .style import ENTER
 
 LIST_ROWS = 8         # rows of the fixture list in view; more scroll
@@ -103,6 +104,7 @@ def fixture_list(section, b) -> int:
 def fixture_fields(app, b, i, f):
     def num(label, field, value, step):
         ch, v = imgui.input_double(f"{label}##fx{i}", value, step, 10 * step, "%.3f", ENTER)
+        ch = typed(app, label, ch)
         record(app, f"inspector:fixture:{i}:{field}")
         if ch:
             set_fixture(app, b, i, field, v)
@@ -110,6 +112,7 @@ def fixture_fields(app, b, i, f):
     num("restitution", "restitution", f.restitution, 0.05)
     mu_s, mu_d = f.friction
     ch, v = imgui.input_float2(f"friction s/d##fx{i}", [mu_s, mu_d], "%.3f", ENTER)
+    ch = typed(app, "friction s/d", ch)
     if ch:
         set_fixture(app, b, i, "friction", tuple(v))
     for field in ("category", "mask"):
@@ -118,6 +121,7 @@ def fixture_fields(app, b, i, f):
         if ch:
             set_fixture(app, b, i, field, parse_bits(text))
     ch, v = imgui.input_int(f"group##fx{i}", f.group, 1, 10, ENTER)
+    ch = typed(app, "group", ch, integer=True)
     if ch:
         set_fixture(app, b, i, "group", v)
     ch, v = imgui.input_text(f"name##fx{i}", f.name or "", ENTER)

@@ -11,7 +11,9 @@ from .dialogs import Dialogs
 from .hits import PanelHits
 from .inspector import InspectorSection
 from .plot_tab import PlotTab
-from .notes import cursor_hint, messages, progress_window
+from ..scene_caption import caption_of
+from .notes import cursor_hint, messages, progress_window, scene_caption
+from .number_typing import NumberTyping
 from .refusal import RefusalBubble
 from .scene import SceneSection
 from .simulation import SimulationSection
@@ -42,6 +44,7 @@ class Panels:
         self.context = ContextMenu(app)
         self.dialogs = Dialogs(app)
         self.refusal = RefusalBubble(app)      # a refused field's message, beside the field
+        self.numbers = NumberTyping(app)       # letters typed into a number field: refused in words
         self.show_stats = True
 
     def ask(self, title, lines, buttons):
@@ -74,12 +77,22 @@ class Panels:
         self.solver.find.tick()
         if self.show_stats:
             self.stats.draw()
+        self.caption()
         messages(app)
         cursor_hint(app)
         self.refusal.draw()
         self.dialogs.draw()
         self.context.draw()
         self.tools.drop()
+
+    def caption(self):
+        app = self.app
+        text = caption_of(app.world.metadata)
+        if text is None:
+            app.ui_rects.pop("caption", None)
+            app.ui_values.pop("caption", None)
+            return
+        scene_caption(app, text)
 
     def main_window(self):
         app = self.app

@@ -8,8 +8,10 @@ from imgui_bundle import imgui
 import physics
 
 from .base import Section, record
+from .number_typing import typed
 from .fixture_inspector import body_text, draw_fixtures
 from .joint_inspector import draw_joint
+from .laser_inspector import draw_laser, selected_laser
 from .plot_tab import probe_checkboxes
 from ..render.colors import PALETTE
 from .style import DIM, ENTER
@@ -32,6 +34,10 @@ class InspectorSection(Section):
     def draw(self):
         app, ed = self.app, self.app.editor
         sel = [s for s in ed.selection if s.alive]
+        laser = selected_laser(app)
+        if not sel and laser is not None:
+            draw_laser(app, laser)
+            return
         if not sel:
             imgui.push_text_wrap_pos(0)
             imgui.text_colored(DIM, "Nothing selected: click a body, a spring or a joint's pin.")
@@ -78,36 +84,45 @@ class InspectorSection(Section):
         if ch:
             self.edit(b, "kind", kinds[k])
         ch, v = imgui.input_float2("position", list(b.position), "%.3f", ENTER)
+        ch = typed(self.app, "position", ch)
         if ch:
             self.edit(b, "position", tuple(v))
         shown = wrap_degrees(math.degrees(b.angle))
         self.app.ui_values["inspector:angle"] = shown
         ch, v = imgui.input_double("angle (deg)", shown, 5.0, 45.0, "%.2f", ENTER)
+        ch = typed(self.app, "angle", ch)
         record(self.app, "inspector:angle")
         if ch:
             self.edit(b, "angle", math.radians(wrap_degrees(v)))
         ch, v = imgui.input_float2("velocity", list(b.velocity), "%.3f", ENTER)
+        ch = typed(self.app, "velocity", ch)
         if ch:
             self.edit(b, "velocity", tuple(v))
         ch, v = imgui.input_double("angular vel.", b.angular_velocity, 0.5, 5.0, "%.3f", ENTER)
+        ch = typed(self.app, "angular velocity", ch)
         if ch:
             self.edit(b, "angular_velocity", v)
         ch, v = imgui.input_double("density", b.density, 0.1, 1.0, "%.3f", ENTER)
+        ch = typed(self.app, "density", ch)
         record(self.app, "inspector:density")
         if ch:
             self.edit(b, "density", v)
         if b.mass > 0:        # a static or kinematic body has no mass to set
             ch, v = imgui.input_double("mass (kg)", b.mass, 0.1, 1.0, "%.4g", ENTER)
+            ch = typed(self.app, "mass", ch)
             record(self.app, "inspector:mass")
             if ch:
                 self.set_mass(b, v)
         ch, v = imgui.input_double("restitution", b.restitution, 0.05, 0.2, "%.3f", ENTER)
+        ch = typed(self.app, "restitution", ch)
         if ch:
             self.edit(b, "restitution", v)
         ch, v = imgui.input_double("static friction", b.static_friction, 0.05, 0.2, "%.3f", ENTER)
+        ch = typed(self.app, "static friction", ch)
         if ch:
             self.edit(b, "friction", (v, b.dynamic_friction))
         ch, v = imgui.input_double("dynamic friction", b.dynamic_friction, 0.05, 0.2, "%.3f", ENTER)
+        ch = typed(self.app, "dynamic friction", ch)
         if ch:
             self.edit(b, "friction", (b.static_friction, v))
         ch, v = imgui.input_text("name", b.name or "", ENTER)
@@ -143,19 +158,24 @@ class InspectorSection(Section):
         imgui.text_colored(DIM, f"length {sp.length:.3f} m")
         probe_checkboxes(self.app, sp)
         ch, v = imgui.input_double("stiffness", sp.stiffness, 10.0, 100.0, "%.2f", ENTER)
+        ch = typed(self.app, "stiffness", ch)
         if ch:
             self.edit(sp, "stiffness", v)
         ch, v = imgui.input_double("damping", sp.damping, 0.1, 1.0, "%.3f", ENTER)
+        ch = typed(self.app, "damping", ch)
         if ch:
             self.edit(sp, "damping", v)
         ch, v = imgui.input_double("rest length", sp.rest_length, 0.1, 1.0, "%.3f", ENTER)
+        ch = typed(self.app, "rest length", ch)
         if ch:
             self.edit(sp, "rest_length", v)
         ch, v = imgui.input_float2("anchor a (local)", list(sp.anchor_a), "%.3f", ENTER)
+        ch = typed(self.app, "anchor a", ch)
         if ch:
             self.edit(sp, "anchor_a", tuple(v))
         label = "anchor b (world)" if sp.body_b is None else "anchor b (local)"
         ch, v = imgui.input_float2(label, list(sp.anchor_b), "%.3f", ENTER)
+        ch = typed(self.app, "anchor b", ch)
         if ch:
             self.edit(sp, "anchor_b", tuple(v))
         ch, v = imgui.input_text("name##spring", sp.name or "", ENTER)

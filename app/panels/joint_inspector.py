@@ -12,6 +12,7 @@ from physics import joint_params as jp
 
 from ..joint_specs import param_value
 from .base import record
+from .number_typing import typed
 from .style import DIM, ENTER, RED
 
 #: step and fast step of a number field, by the parameter's rule
@@ -68,6 +69,7 @@ def optional_number(app, j, name, value, rule, key):
         return
     small, big = STEPS[rule]
     ch, v = imgui.input_double(name, value, small, big, "%.4g", ENTER)
+    ch = typed(app, name, ch)
     record(app, key)
     if ch:
         ed.set_property(j, name, v)
@@ -79,6 +81,7 @@ def parameter(app, j, name, p):
     value = param_value(j, name)
     if p.rule == "vec":
         ch, v = imgui.input_float2(name, list(value), "%.4g", ENTER)
+        ch = typed(app, name, ch)
         record(app, key)
         if ch:
             ed.set_property(j, name, tuple(v))
@@ -87,6 +90,7 @@ def parameter(app, j, name, p):
     else:
         small, big = STEPS[p.rule]
         ch, v = imgui.input_double(name, value, small, big, "%.4g", ENTER)
+        ch = typed(app, name, ch)
         record(app, key)
         if ch:
             ed.set_property(j, name, v)
@@ -103,6 +107,7 @@ def geometry(app, j):
     """Where the joint holds (world point), and its axis: edited like the parameters."""
     for name in GEOMETRY.get(j.kind, ()):
         ch, v = imgui.input_float2(f"{name} (world)", list(getattr(j, name)), "%.4g", ENTER)
+        ch = typed(app, name, ch)
         record(app, f"inspector:joint:{name}")
         if ch:
             app.editor.set_property(j, name, tuple(v))
@@ -126,6 +131,7 @@ def common(app, j):
             imgui.text_colored(DIM, f"{name}: unbreakable")
             continue
         ch, v = imgui.input_double(name, value, 10.0, 100.0, "%.4g", ENTER)
+        ch = typed(app, name, ch)
         record(app, f"inspector:joint:{name}")
         if ch:
             ed.set_property(j, name, v)

@@ -20,7 +20,10 @@ class RefusalBubble:
         self.field = None            # (x0, y0, x1, y1) of the refused field (window pixels, y down)
         app.editor.on_refusal.append(self.refused)
 
-    def refused(self):
+    def refused(self, at=None):
+        if at is not None:         # a refusal between frames (keys typed into a field) says where
+            self.field = at
+            return
         a, b = imgui.get_item_rect_min(), imgui.get_item_rect_max()
         self.field = (a.x, a.y, b.x, b.y)
 
@@ -33,7 +36,12 @@ class RefusalBubble:
         x0, y0, x1, _ = self.field
         panel = app.ui_rects.get("main_window")
         left = panel[2] + 6 if panel and panel[0] <= x0 <= panel[2] else x1 + 8
-        imgui.set_next_window_pos(imgui.ImVec2(left, y0 - 3), imgui.Cond_.always.value)
+        # at the field's height, but inside the window (a field at the bottom of the panel had
+        # its message cut off below)
+        pad = imgui.get_style().window_padding
+        tall = imgui.calc_text_size(text, False, WRAP_PX).y + 2 * pad.y
+        top = max(0.0, min(y0 - 3, app.height - tall - 4))
+        imgui.set_next_window_pos(imgui.ImVec2(left, top), imgui.Cond_.always.value)
         imgui.set_next_window_bg_alpha(0.92)
         imgui.begin("##refusal", None, NOTE_FLAGS)
         imgui.push_text_wrap_pos(WRAP_PX)

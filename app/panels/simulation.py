@@ -5,6 +5,7 @@ from imgui_bundle import imgui
 
 from ..field_bounds import checked_gravity
 from .base import Section, record
+from .number_typing import typed
 from .style import AMBER, DIM, ENTER, RED
 from .timeline import timeline_slider
 
@@ -28,15 +29,19 @@ class SimulationSection(Section):
         timeline_slider(app, f"steps {w.steps}   bodies {len(app.rd_ids)}")
         ch, v = imgui.slider_float("time scale", sim.time_scale, 0.05, 4.0, "%.2fx",
                                    imgui.SliderFlags_.logarithmic.value)
+        ch = typed(app, "time scale", ch)       # Ctrl+click types a value
+        record(app, "sim:time_scale")
         if ch:
             sim.time_scale = v
         self.speed(sim)
         ch, hz = imgui.input_double("step rate (Hz)", 1.0 / w.dt, 10.0, 60.0, "%.1f", ENTER)
+        ch = typed(app, "step rate", ch)
         record(app, "sim:step_rate")
         if ch:
             app.editor.set_step_rate(hz)
         g = list(w.gravity)
         ch, g = imgui.input_float2("gravity", g, "%.2f", ENTER)
+        ch = typed(app, "gravity", ch)
         record(app, "sim:gravity")
         if ch:
             app.editor.set_world("gravity", tuple(g), lambda v: setattr(w, "gravity", checked_gravity(v)),

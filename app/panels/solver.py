@@ -8,6 +8,7 @@ from physics import options
 from .. import reliability
 
 from .base import Section, record
+from .number_typing import typed
 from .find_settings import FindSettings
 from .style import DIM
 
@@ -104,6 +105,7 @@ class SolverSection(Section):
         settings = w.settings
         for name, decl in settings.declared().items():
             ch, v = setting_widget(f"{name}##{w.solver}", decl, settings[name])
+            ch = typed(self.app, name, ch, integer=isinstance(decl.default, int))
             if decl.doc and imgui.is_item_hovered():
                 imgui.set_tooltip(decl.doc)
             if ch:

@@ -5,6 +5,7 @@ from __future__ import annotations
 from imgui_bundle import imgui
 
 from .base import Section, record
+from .number_typing import typed
 from .style import DIM
 
 
@@ -53,35 +54,41 @@ class ToolsSection(Section):
         imgui.same_line()
         imgui.set_next_item_width(60)
         ch1, g = imgui.input_float("m##snapgrid", snap.grid, 0, 0, "%.2f", imgui.InputTextFlags_.enter_returns_true.value)
+        ch1 = typed(self.app, "snap grid", ch1)
         imgui.same_line()
         imgui.set_next_item_width(50)
         ch2, a = imgui.input_float("deg##snapangle", snap.angle, 0, 0, "%.0f", imgui.InputTextFlags_.enter_returns_true.value)
+        ch2 = typed(self.app, "snap angle", ch2)
         if ch1 or ch2:
             try:
                 snap.set_steps(g, a)
             except ValueError as exc:
                 self.app.editor.notify(f"refused: {exc}", error=True)
 
-    @staticmethod
-    def options(o):
+    def options(self, o):
         kinds = ["dynamic", "static", "kinematic"]
         ch, k = imgui.combo("new body kind", kinds.index(o.kind), kinds)
         if ch:
             o.kind = kinds[k]
         ch, v = imgui.slider_int("n-gon sides", o.sides, 3, 12)
+        ch = typed(self.app, "n-gon sides", ch, integer=True)      # Ctrl+click types a value
         if ch:
             o.sides = v
         ch, v = imgui.slider_float("click size (m)", o.default_size, 0.2, 5.0, "%.2f")
+        ch = typed(self.app, "click size", ch)
         if ch:
             o.default_size = v
         ch, v = imgui.slider_float("restitution##new", o.restitution, 0.0, 1.0, "%.2f")
+        ch = typed(self.app, "restitution", ch)
         if ch:
             o.restitution = v
         ch, v = imgui.slider_float("spring k##new", o.spring_stiffness, 1.0, 2000.0, "%.0f",
                                    imgui.SliderFlags_.logarithmic.value)
+        ch = typed(self.app, "spring k", ch)
         if ch:
             o.spring_stiffness = v
         ch, v = imgui.slider_float("mouse joint Hz", o.joint_hertz, 0.5, 20.0, "%.1f")
+        ch = typed(self.app, "mouse joint Hz", ch)
         if ch:
             o.joint_hertz = v
 
@@ -89,18 +96,22 @@ class ToolsSection(Section):
         """The joint tools' options, shown while one of them is active."""
         if tool == "motor":
             ch, v = imgui.slider_float("motor speed", o.motor_speed, -20.0, 20.0, "%.2f")
+            ch = typed(self.app, "motor speed", ch)
             record(self.app, "tools:motor_speed")
             if ch:
                 o.motor_speed = v
             ch, v = imgui.slider_float("motor torque", o.motor_torque, 0.0, 2000.0, "%.1f",
                                        imgui.SliderFlags_.logarithmic.value)
+            ch = typed(self.app, "motor torque", ch)
             if ch:
                 o.motor_torque = v
         elif tool == "wheel":
             ch, v = imgui.slider_float("suspension Hz", o.wheel_hertz, 0.0, 20.0, "%.1f")
+            ch = typed(self.app, "suspension Hz", ch)
             if ch:
                 o.wheel_hertz = v
             ch, v = imgui.slider_float("susp. damping", o.wheel_damping_ratio, 0.0, 2.0, "%.2f")
+            ch = typed(self.app, "suspension damping", ch)
             if ch:
                 o.wheel_damping_ratio = v
         elif tool == "slider":

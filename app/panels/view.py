@@ -4,6 +4,7 @@ from __future__ import annotations
 from imgui_bundle import imgui
 
 from .base import Section, record, wrapped
+from .number_typing import typed
 from .style import DIM, ENTER, RED
 
 OVERLAYS = (("contacts and normals (C)", "contacts"), ("AABBs (B)", "aabbs"), ("quadtree (Q)", "quadtree"),
@@ -38,6 +39,7 @@ class ViewSection(Section):
         tr = app.editor.tracers
         imgui.separator_text("tracers")
         ch, v = imgui.input_float("trail seconds", tr.seconds, 0.5, 2.0, "%.1f", ENTER)
+        ch = typed(app, "trail seconds", ch)
         record(app, "view:trail_seconds")
         if ch:
             try:
@@ -58,8 +60,10 @@ class ViewSection(Section):
         imgui.same_line()
         _, b.enabled = imgui.checkbox("remove bodies that leave it", b.enabled)
         ch1, lo = imgui.input_float2("bound min (m)", [float(v) for v in b.lo], "%.1f", ENTER)
+        ch1 = typed(app, "bound min", ch1)
         record(app, "bound:min")
         ch2, hi = imgui.input_float2("bound max (m)", [float(v) for v in b.hi], "%.1f", ENTER)
+        ch2 = typed(app, "bound max", ch2)
         record(app, "bound:max")
         if ch1 or ch2:
             try:

@@ -1,12 +1,13 @@
 """Laser tool: click to place an emitter (on a body it rides with the body, in empty space it is
-fixed), drag to aim it.  Drag an emitter to re-aim it, shift-click it to delete it; a click on an
-emitter selects it and Delete removes it.  The beam itself is ``app.lasers``'."""
+fixed), drag to aim it.  Drag an emitter to re-aim it, Ctrl+drag it to move it (dropped on a body
+it rides with that body), shift-click it to delete it; a click on an emitter selects it (the
+inspector reads its beam out) and Delete removes it.  The beam itself is ``app.lasers``'."""
 from __future__ import annotations
 
 import numpy as np
 
-from ..laser_commands import AddLaser, AimLaser, RemoveLaser
-from ..lasers import COLOR, Laser, aim_angle, trace
+from ..laser_commands import AddLaser, AimLaser, MoveLaser, RemoveLaser
+from ..lasers import COLOR, Laser, aim_angle, moved_spec, trace
 from ..picking import body_at
 from .base import Tool
 
@@ -18,13 +19,14 @@ class LaserTool(Tool):
     name = "laser"
     snaps = True
     help = "click: place a laser (on a body it rides with it), drag to aim; drag an emitter to re-aim, " \
-           "shift-click it (or select it and press Delete) to remove it"
+           "Ctrl+drag it to move it, shift-click it (or select it and press Delete) to remove it"
 
     def __init__(self, editor):
         super().__init__(editor)
         self.selected = None         # the emitter picked last (Delete removes it)
         self.pending = None          # the laser being placed (not yet in the document)
         self.aiming = None           # (laser, old angle) while an emitter is dragged
+        self.moving = None           # (laser, old spec) while an emitter is Ctrl+dragged
         self.p0 = None
 
     def press(self, p, button, mods):
@@ -37,8 +39,12 @@ class LaserTool(Tool):
                 ed.execute(RemoveLaser(hit))
                 ed.notify("laser deleted (Ctrl+Z brings it back)")
                 return
+            ed.select(None)           # the inspector shows the emitter, not a body selected before
             self.selected = hit
-            self.aiming = (hit, hit.angle)
+            if mods & (K.MOD_CTRL | K.MOD_COMMAND):
+                self.moving = (hit, hit.spec())
+            else:
+                self.aiming = (hit, hit.angle)
             return
         b = body_at(ed.world, p)
         if b is None:
@@ -54,11 +60,21 @@ class LaserTool(Tool):
         laser.angle = aim_angle(laser.body(), d)
         return True
 
+    def _move(self, p):
+        """The Ctrl+dragged emitter at ``p`` (its beam follows), or back where it was for a click."""
+        lz, old = self.moving
+        if np.hypot(*(np.asarray(p, dtype=float) - self.p0)) * self.editor.camera.scale < AIM_PX:
+            lz.set_spec(old)
+        else:
+            lz.set_spec(moved_spec(self.editor.world, self.editor.refs, lz, p))
+
     def drag(self, p):
         if self.pending is not None:
             self._aim(self.pending, p)
         elif self.aiming is not None:
             self._aim(self.aiming[0], p)
+        elif self.moving is not None:
+            self._move(p)
 
     def release(self, p):
         ed = self.editor
@@ -67,6 +83,7 @@ class LaserTool(Tool):
             self._aim(lz, p)
             cmd = AddLaser(lz.spec())
             ed.execute(cmd)
+            ed.select(None)
             self.selected = cmd.laser
             where = "fixed in the world" if lz.ref is None else f"on {lz.ref.obj.name or lz.ref.obj.id}"
             ed.notify(f"laser placed {where}")
@@ -76,6 +93,13 @@ class LaserTool(Tool):
             if self._aim(lz, p) and lz.angle != old:
                 new, lz.angle = lz.angle, old
                 ed.execute(AimLaser(lz, new, old))
+        elif self.moving is not None:
+            self._move(p)
+            (lz, old), self.moving = self.moving, None
+            new = lz.spec()
+            if new != old:
+                lz.set_spec(old)
+                ed.execute(MoveLaser(lz, new, old))
 
     def key(self, symbol) -> bool:
         from pyglet.window import key as K
@@ -92,6 +116,10 @@ class LaserTool(Tool):
             lz, old = self.aiming
             lz.angle = old
             self.aiming = None
+        if self.moving is not None:
+            lz, old = self.moving
+            lz.set_spec(old)
+            self.moving = None
 
     def decorate(self, decor, cursor):
         lz = self.pending
