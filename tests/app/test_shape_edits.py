@@ -35,7 +35,11 @@ def editor(display, monkeypatch):
 
 class FakeApp:
     def __init__(self, ed):
+        from types import SimpleNamespace
+
+        from app.panels.number_typing import NumberTyping
         self.editor = ed
+        self.panels = SimpleNamespace(numbers=NumberTyping(self))  # the panels' number-field typing
 
 
 def named(ed, name):
