@@ -17,7 +17,8 @@ from __future__ import annotations
 from ..._jit import kernel
 from ...constraints.point import prepare_points
 from ...settings import Setting, declare
-from ...store.flat import bodies_view, contacts_view, joints_view, springs_view
+from ...store.flat import bodies_view, contacts_view, springs_view
+from ...store.optional import optional_joints
 from .classic_joints import begin_classic_joints, end_classic_joints
 from .common import COMMON, IMPULSE_SETTINGS, NO_PENALTY, PROJECTIONS, SeedMode, auto_speed, share_factor
 from .contact_geometry import classify
@@ -63,9 +64,7 @@ def impulse_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, P, R, hybrid, JF, J
     """``impulse_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
     ``JF`` None: a world without joints."""
     B, C, S = bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI)
-    if JF is None:
-        return impulse_step(ctx, par, B, C, S, P, R, hybrid, None, JW, JS)
-    return impulse_step(ctx, par, B, C, S, P, R, hybrid, joints_view(JF, JI), JW, JS)
+    return impulse_step(ctx, par, B, C, S, P, R, hybrid, optional_joints(JF, JI), JW, JS)
 
 
 class ImpulseMode(SeedMode):

@@ -13,7 +13,8 @@ from __future__ import annotations
 from ..._jit import kernel
 from ...constraints.point import prepare_points
 from ...settings import declare
-from ...store.flat import bodies_view, contacts_view, joints_view, springs_view
+from ...store.flat import bodies_view, contacts_view, springs_view
+from ...store.optional import optional_joints
 from .common import COMMON, PENALTY_SETTINGS, SeedMode, contact_rate, penalty_params
 from .classic_joints import begin_classic_joints, end_classic_joints
 from .contact_geometry import PENALTY, flag_all
@@ -40,9 +41,7 @@ def penalty_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, P, R, JF, JI, JW, J
     """``penalty_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
     ``JF`` None: a world without joints."""
     B, C, S = bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI)
-    if JF is None:
-        return penalty_step(ctx, par, B, C, S, P, R, None, JW, JS)
-    return penalty_step(ctx, par, B, C, S, P, R, joints_view(JF, JI), JW, JS)
+    return penalty_step(ctx, par, B, C, S, P, R, optional_joints(JF, JI), JW, JS)
 
 
 class PenaltyMode(SeedMode):

@@ -35,7 +35,8 @@ from ...constraints.joints.dispatch import store_joints
 from ...constraints.joints.position import correct_joint_positions
 from ...constraints.joints.table_passes import begin_table_joints, table_joint_pass
 from ...constraints.springs.substep import solve_springs
-from ...store.flat import bodies_view, contacts_view, joints_view, springs_view
+from ...store.flat import bodies_view, contacts_view, springs_view
+from ...store.optional import optional_joints
 from .motion import integrate_positions, integrate_velocities, reset_displacements
 
 GLOBAL = 0  # index of "global" in the joint_solver setting's choices (solvers/joint_settings.py)
@@ -93,6 +94,4 @@ def si_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, W, M, JF, JI, JW, JS):
     """``si_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
     ``JF`` None: a world without joints."""
     B, C, S = bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI)
-    if JF is None:
-        return si_step(ctx, par, B, C, S, W, M, None, JW, JS)
-    return si_step(ctx, par, B, C, S, W, M, joints_view(JF, JI), JW, JS)
+    return si_step(ctx, par, B, C, S, W, M, optional_joints(JF, JI), JW, JS)

@@ -38,7 +38,8 @@ from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
 from ...constraints.restitution_cluster import save_velocities
 from ...constraints.springs.substep import solve_springs
-from ...store.flat import bodies_view, contacts_view, joints_view, springs_view
+from ...store.flat import bodies_view, contacts_view, springs_view
+from ...store.optional import optional_joints
 
 GLOBAL = 0  # index of "global" in the joint_solver setting's choices
 
@@ -109,6 +110,4 @@ def soft_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, R, SB, JF, JI, JW, JS)
     """``soft_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
     ``JF`` None: a world without joints (no joint code is compiled)."""
     B, C, S = bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI)
-    if JF is None:
-        return soft_step(ctx, par, B, C, S, R, SB, None, JW, JS)
-    return soft_step(ctx, par, B, C, S, R, SB, joints_view(JF, JI), JW, JS)
+    return soft_step(ctx, par, B, C, S, R, SB, optional_joints(JF, JI), JW, JS)
