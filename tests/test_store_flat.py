@@ -64,3 +64,27 @@ def test_the_islands_joint_links_kernel_matches_its_numpy_reference():
     want = joint_links(J)
     assert k == 3 and np.array_equal(out[:k], want)
     assert list(want[:, 2]) == [1, 0, 0]
+
+
+def test_optional_joints_compiles_only_the_variant_a_world_needs():
+    """store/optional.py: a caller given the joint table's arrays compiles its callee for the
+    joints' view only, and one given None for None only ('if JF is None' in the caller compiled
+    both: numba prunes it only when the type is None)."""
+    from numba import njit
+
+    from physics.store.optional import optional_joints
+
+    @njit
+    def rows(J):
+        return -1 if J is None else J.a.shape[0]
+
+    @njit
+    def caller(JF, JI):
+        return rows(optional_joints(JF, JI))
+
+    s = Store()
+    s.joints.add()
+    assert caller(*s.joints.arrays.flat) == s.joints.capacity
+    assert len(rows.signatures) == 1
+    assert caller(None, None) == -1
+    assert len(rows.signatures) == 2
