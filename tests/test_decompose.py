@@ -15,6 +15,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import physics
+from bench.scene_limits import noisy as _noisy, star as _star
 
 
 def area(p):
@@ -120,19 +121,6 @@ def test_convex_input_is_one_piece_and_collinear_points_are_dropped():
 def test_bad_outlines_are_refused_by_name(outline, words):
     with pytest.raises(ValueError, match=words):
         physics.decompose(outline)
-
-
-def _star(n):
-    a = np.linspace(0, 2 * math.pi, n, endpoint=False)
-    r = np.where(np.arange(n) % 2 == 0, 1.0, 0.6)
-    return np.c_[r * np.cos(a), r * np.sin(a)]
-
-
-def _noisy(n, seed=1):
-    rng = np.random.default_rng(seed)
-    a = np.sort(rng.uniform(0, 2 * math.pi, n))
-    r = rng.uniform(0.5, 1.0, n)
-    return np.c_[r * np.cos(a), r * np.sin(a)]
 
 
 @pytest.mark.timeout(120)

@@ -231,22 +231,10 @@ class Islands:
                                    *store.springs.arrays.flat, links, self.parent, self.min_t, self.label)
 
 
-def joint_links(joints) -> np.ndarray:
-    """(a, b, driving) per unbroken joint: the rows ``update_islands`` reads."""
-    n = joints.n
-    J = joints.view
-    keep = (J.flags[:n] & BROKEN) == 0
-    driving = (J.max_motor[:n] > 0.0) & (J.motor_speed[:n] != 0.0) & (J.kind[:n] != MOUSE)
-    out = np.empty((int(keep.sum()), 3), dtype=np.int64)
-    out[:, 0] = J.a[:n][keep]
-    out[:, 1] = J.b[:n][keep]
-    out[:, 2] = driving[keep]
-    return out
-
-
 @kernel
 def joint_links_flat(JF, JI, nj, out):
-    """``joint_links`` of the joint table's flat arrays into ``out``; returns the row count."""
+    """(a, b, driving) per unbroken joint of the flat joint table, into ``out``: the rows
+    ``update_islands`` reads; returns the row count."""
     J = joints_view(JF, JI)
     k = 0
     for j in range(nj):

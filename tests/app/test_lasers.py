@@ -45,6 +45,21 @@ def faces(st):
     return out
 
 
+def expected_beam(st, p, angle):
+    """(the beam's hit points, emitter first, and its direction after the last) from the faces of
+    the scene as it stands."""
+    p, d = np.array(p, float), np.array((math.cos(angle), math.sin(angle)))
+    pts = [p]
+    for _ in range(7):
+        hit = planes_hit(p, d, faces(st))
+        if hit is None:
+            break
+        p, n = hit
+        d = d - 2 * np.dot(d, n) * n
+        pts.append(p)
+    return np.array(pts), d
+
+
 def test_laser_place_aim_reflect_ride_undo_delete(launch, tmp_path):
     app = launch(tools_scene(tmp_path / "tools.json"), "--paused")
     st = app.wait_ready(10)
@@ -60,15 +75,7 @@ def test_laser_place_aim_reflect_ride_undo_delete(launch, tmp_path):
     assert lz["body"] is None and lz["local"] == pytest.approx((-7.0, 3.0), abs=0.05)
     assert lz["angle"] == pytest.approx(-math.pi / 4, abs=0.05)
     # the expected beam: faces met in turn, each mirroring the direction about its normal
-    p, d = np.array(lz["local"]), np.array((math.cos(lz["angle"]), math.sin(lz["angle"])))
-    want = [p]
-    for _ in range(7):
-        hit = planes_hit(p, d, faces(st))
-        if hit is None:
-            break
-        p, n = hit
-        d = d - 2 * np.dot(d, n) * n
-        want.append(p)
+    want, d = expected_beam(st, lz["local"], lz["angle"])
     path = np.array(lz["path"])
     assert len(want) >= 3, "the aim should meet box a, then the ground"
     assert len(path) == len(want) + 1, (path, want)          # + the last segment's end in the air
