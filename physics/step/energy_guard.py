@@ -52,7 +52,9 @@ import math
 import numpy as np
 
 from ..store import DYNAMIC
-from .energy_sums import ELASTIC, EXTERNAL, KE, LOWEST, MASS, PE, PUSH, SUMS, motor_power
+from .energy_bound import (ACTIVE, E0, E_OUT, E_START, LAST, LIMIT_OUT, NOISE_SPEED, P_START, PUSH_MAX, S0,
+                           SLOTS, WORK, guard_begin, guard_excess)
+from .energy_sums import SUMS, motor_power
 
 #: speed (m/s) per contact manifold at which push-out may separate overlapping bodies
 PUSH_SPEED = 10.0
@@ -75,8 +77,6 @@ def energies(world) -> tuple[float, float]:
             elastic = sum(0.5 * s.stiffness * (s.length - s.rest_length) ** 2 for s in world.springs)
     return ke + pe + elastic, ke + elastic + abs(pe)
 
-
-NOISE_SPEED = 1e-3  # m/s
 
 
 def noise_floor(world, dt: float) -> float:
@@ -116,60 +116,60 @@ def _motor_power(world) -> tuple[float, bool]:
     return float(p), bool(dragged)
 
 
-def _scale(sums) -> tuple[float, float]:
-    """(E, S) from a sums array of energy_sums.guard_sums, the gravitational part of S measured
-    from the lowest dynamic body (sum_i m_i g (h_i - h_min): no origin in it)."""
-    ke, pe, elastic = sums[KE], sums[PE], sums[ELASTIC]
-    return ke + pe + elastic, ke + elastic + max(pe - sums[MASS] * sums[LOWEST], 0.0)
+def _slot(i: int, kind=float):
+    """A property over the guard's state array ``G`` (energy_bound.py's slots)."""
+    def get(self):
+        return kind(self.G[i])
+
+    def put(self, value):
+        self.G[i] = value
+    return property(get, put)
 
 
 class EnergyGuard:
     """The reference energy and the bound of the current run without external input.
 
+    Its memory is the array ``G`` (energy_bound.py), which the step driver updates in place;
     ``start`` and ``end`` are the sums (energy_sums.py) that the step's opening and closing
-    kernels fill; the functions above compute the same quantities in numpy for tests and tools.
+    kernels fill.  The functions above compute the same quantities in numpy for tests and tools.
     """
 
+    last = _slot(LAST)        # energy at the end of the last accepted step (nan: none)
+    e0 = _slot(E0)
+    s0 = _slot(S0)
+    push = _slot(PUSH_MAX)
+    work = _slot(WORK)        # bound of the work the motors did since the reference (J)
+    p_start = _slot(P_START)  # the motors' power bound at this step's start (W)
+    active = _slot(ACTIVE, bool)
+    e_start = _slot(E_START)
+
     def __init__(self):
-        self.last = math.nan  # energy at the end of the last accepted step (nan: none)
-        self.e0 = self.s0 = self.push = 0.0
-        self.work = 0.0     # bound of the work the motors did since the reference (J)
-        self.p_start = 0.0  # the motors' power bound at this step's start (W)
-        self.active = False
-        self.start = np.zeros(SUMS)
+        self.G = np.zeros(SLOTS)
+        self.G[LAST] = math.nan
+        self._start = np.zeros(SUMS)
         self.end = np.zeros(SUMS)
+
+    @property
+    def start(self):
+        return self._start
+
+    @start.setter
+    def start(self, values):  # in place: the step driver holds this array
+        self._start[:] = values
 
     def begin(self, world) -> None:
         """Before a step (after begin_step filled ``self.start``): start a new reference after an
         edit or an external input."""
-        growth = world.energy_guard
-        self.p_start, dragged = _motor_power(world)
-        if growth <= 0.0 or self.start[EXTERNAL] or dragged:
-            self.active = False
-            self.last = math.nan
-            return
-        e, s = _scale(self.start)
-        if not (e == self.last and self.active):
-            self.e0, self.s0, self.push, self.work = e, s, 0.0, 0.0
-        self.active = True
-        self.e_start = e
+        p, dragged = _motor_power(world)
+        guard_begin(self.G, self._start, float(world.energy_guard), p, dragged)
 
     def excess(self, world, dt: float) -> tuple[float, float] | None:
         """After a step (end_step filled ``self.end``): (energy, bound) when the energy is beyond
         the bound, else None."""
-        if not self.active:
+        if not self.G[ACTIVE]:
             return None
-        e, s = _scale(self.end)
-        self.push = max(self.push, float(self.end[PUSH]))
-        floor = floor_for(self.end[MASS], world, dt)
-        # the motors' work: at most their power bound at the step's start and at its end, each
-        # over the whole step (the speeds in between lie between them, give or take the solver)
-        work = self.work + dt * (self.p_start + _motor_power(world)[0])
-        limit = self.e0 + world.energy_guard * (self.s0 + 0.5 * s) + self.push + work + floor
-        # rounding: E sums terms of size up to S
-        if e - limit > 1e-12 * (s + self.s0 + abs(self.e0)) + 1e-300:
-            self.last = self.e_start  # the step is reverted to the state it started from
-            return e, limit
-        self.last = e
-        self.work = work
+        g = math.hypot(world._gravity[0], world._gravity[1])
+        if guard_excess(self.G, self.end, float(world.energy_guard), dt, g, world.linear_slop,
+                        _motor_power(world)[0]):
+            return float(self.G[E_OUT]), float(self.G[LIMIT_OUT])
         return None

@@ -34,6 +34,7 @@ from .events import StepEvents
 from .context import ModeParams, StepContext
 from .frame import begin_step_flat, end_step_flat
 from .islands import Islands
+from .one_call import OneCall
 from .profile import StepProfile
 
 
@@ -53,6 +54,8 @@ class Pipeline:
         self.dirty = True  # the world's settings changed: refresh the context's settings
         self._dt = None
         self._no_keys = np.zeros(0, np.int64)
+        self.one_call = OneCall()  # the step as one compiled call, where the mode has a driver
+        self.python_steps = 0  # narrow phases run from Python (the driver's pack is then rebuilt)
 
     def invalidate(self) -> None:
         """Something was edited: the next step runs in full (and queries rebuild their tree)."""
@@ -61,7 +64,7 @@ class Pipeline:
 
     # -- the context ----------------------------------------------------
     def _refresh(self, world, dt: float) -> None:
-        """Write this step's scalars into the step context (settings only when they changed)."""
+        """Write this step's counts and settings into the step context."""
         ctx = self.ctx
         store = world._store
         ctx.set("step", world.steps)
@@ -69,6 +72,11 @@ class Pipeline:
         ctx.set("ns", store.springs.n)
         ctx.set("nj", store.joints.n)
         ctx.set("nc", store.contacts.n)
+        self.refresh_settings(world, dt)
+
+    def refresh_settings(self, world, dt: float) -> None:
+        """Write the step length and, when they changed, the world's settings into the context."""
+        ctx = self.ctx
         if dt != self._dt:
             ctx.set("dt", dt)
             ctx.set("inv_dt", 1.0 / dt)
@@ -105,6 +113,7 @@ class Pipeline:
 
     def collide(self, world, dt: float, geometry: bool = True) -> None:
         s = world._store
+        self.python_steps += 1
         if geometry:
             self.refresh_geometry(world, dt)
         F = s.fixtures.view
@@ -148,6 +157,8 @@ class Pipeline:
             if n == 0:
                 self.events.idle(world)
             return
+        if self.one_call.step(world, self, dt):
+            return
         self.profile.start()
         self._refresh(world, dt)
         guard = self._guard
@@ -163,10 +174,7 @@ class Pipeline:
             self.sleep(world, dt)
         except SimulationError as err:
             # a stage refused the step (e.g. an explicit integrator that cannot be stable)
-            self._revert(world)
-            err.stage = err.stage or stage
-            world.fault = err
-            raise
+            self.refuse(world, err, stage)
         except ArithmeticError as exc:
             # Python-side arithmetic of a stage overflowed (a rate or count out of the float
             # range): the step's numbers are not representable, which is a refused step too
@@ -208,6 +216,13 @@ class Pipeline:
         return end_step_flat(self.ctx.array, *store.bodies.arrays.flat, *store.springs.arrays.flat, ck.bad, ck.why,
                              C.a, C.b, nc, ck.count, self._guard.end, C.key, C.count, C.depth, C.jn,
                              *self.events.contacts.scratch(nc))
+
+    def refuse(self, world, err, stage: str) -> None:
+        """Revert the step and raise ``err`` (a SimulationError) as the ``stage`` stage's."""
+        self._revert(world)
+        err.stage = err.stage or stage
+        world.fault = err
+        raise err
 
     #: the stages that write the bodies' state (x, q, v, w); the others read it (collision) or
     #: only zero velocities (islands), so a non-finite state after the step is theirs

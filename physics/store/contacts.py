@@ -129,19 +129,34 @@ class ContactBuffer:
         bodies (a pile stirred at 1 MHz threw boxes at 140 m/s once back at 60 Hz), so
         a span growing more than MAX_SPAN_GROWTH times drops the impulses instead.
         """
+        r = self.adopt_factor(span, step)
         n = self.n
+        if r != 1.0 and n:
+            self.cur.jn[:n] *= r
+            self.cur.jt[:n] *= r
+
+    def adopt_factor(self, span: float, step: int) -> float:
+        """What :meth:`adopt` multiplies the current impulses by (1 keeps them, 0 drops them),
+        with the span recorded as adopt does; the step driver applies the factor itself."""
+        r = 1.0
         if self.span_step == step:
-            if self.span != span and n:
+            if self.span != span:
                 r = span / self.span
-                keep = r <= MAX_SPAN_GROWTH
-                self.cur.jn[:n] *= r if keep else 0.0
-                self.cur.jt[:n] *= r if keep else 0.0
-        elif n:
-            self.cur.jn[:n] = 0.0
-            self.cur.jt[:n] = 0.0
+                if r > MAX_SPAN_GROWTH:
+                    r = 0.0
+        else:
+            r = 0.0
         # the next step sees these impulses (span) if nobody else steps in between
         self.span = span
         self.span_step = step + 1
+        return r
+
+    def reserve(self, need: int, limit: int | None = None) -> None:
+        """Room for ``need`` rows before a step's swap (the current rows are kept)."""
+        if need > self.capacity:
+            self.swap()
+            self.ensure(need, limit)
+            self.swap()
 
     def forget_impulses(self) -> None:
         """Zero every carried point state of both tables (after a refused step)."""

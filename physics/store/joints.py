@@ -108,14 +108,23 @@ class JointTable(Table):
         """Make the accumulated impulses mean impulse over ``span`` seconds for ``step``
         (rescaled when another mode or step length wrote them for this step, dropped when
         they are older: a warm start is only a first guess)."""
+        r = self.adopt_factor(span, step)
         n = self.n
+        if r != 1.0 and n:
+            self.view.impulse[:n] *= r
+
+    def adopt_factor(self, span: float, step: int) -> float:
+        """What :meth:`adopt` multiplies the impulses by (1 keeps them, 0 drops them), with the
+        span recorded as adopt does; the step driver applies the factor itself."""
+        r = 1.0
         if self.span_step == step:
-            if self.span != span and n and self.span > 0.0:
-                self.view.impulse[:n] *= span / self.span
-        elif n:
-            self.view.impulse[:n] = 0.0
+            if self.span != span and self.span > 0.0:
+                r = span / self.span
+        else:
+            r = 0.0
         self.span = span
         self.span_step = step + 1
+        return r
 
     def note_broken(self) -> None:
         """After a step in which joints broke: remember which, and rebuild the row structures."""

@@ -1,0 +1,181 @@
+"""The step as one compiled call, where the world's mode has a driver (soft_step's: driver.py).
+
+``OneCall.step`` packs the world's arrays (pack.py) once per change of structure, calls the
+driver once per step and does in Python only what compiled code cannot: grow an array and call
+again, raise a refused step, run the user's callbacks.  The Python work per step does not grow
+with the scene.  A world the driver does not cover (another mode, the coloured layout, sensors,
+a user pair filter, a broad phase other than brute force) steps through the pipeline's stages.
+"""
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+
+from ..collision import broadphase
+from ..collision.broadphase.limit import check_pairs
+from ..constraints.joints.work import after_step, joint_work
+from ..errors import SimulationError
+from ..solvers.soft_step.layout import LAYOUTS
+from . import soft_driver as drv
+from .energy_bound import E_OUT, LIMIT_OUT
+from .pack import StepPack
+from .soft_driver import (D_CADOPT, D_GMAG, D_GROWTH, D_JADOPT, S_BROKEN, S_EPAR, S_KBAD, S_LIMIT, S_N, S_NA,
+                          S_NAWAKE, S_NB, S_NC, S_NEED, S_NF, S_NJ, S_NPAIRS, S_NS, S_NT, S_NTOUCH, S_SLEEP, S_STEP,
+                          soft_world_step)
+
+_ROWS = LAYOUTS.index("rows")
+_NO_LINKS = np.zeros((0, 3), np.int64)
+
+
+class OneCall:
+    """The pack of one world and the Python side of its driver."""
+
+    def __init__(self):
+        self.P = None
+        self.key = None
+        self.S, self.D, self.T = drv.empty_state()
+        self._keys = ()  # the touching sets' arrays in the pack (to notice a replaced one)
+
+    # -- whether and what --------------------------------------------------
+    @staticmethod
+    def usable(world, pl, par) -> bool:
+        """Whether the driver covers this world as it is now."""
+        return (world._mode.name == "soft_step" and par.get("solver_layout") == _ROWS
+                and world._pair_filter is None and world._n_sensors == 0 and not pl.events.sensors.active
+                and broadphase.resolve(world.broadphase, world._store.fixtures.n) == "brute")
+
+    @staticmethod
+    def _key(world, pl, par) -> tuple:
+        """What the pack and the choice of path depend on (ids: the pack keeps the arrays alive)."""
+        s = world._store
+        return (pl.edits, pl.python_steps, par.version, id(world._mode), id(s.bodies.arrays),
+                id(s.fixtures.arrays), id(s.verts.arrays), id(s.springs.arrays), id(s.joints.arrays),
+                s.joints.version, s.contacts.full, world.max_pairs, world._pair_filter is None,
+                world._n_sensors, pl.events.sensors.active, world.broadphase)
+
+    def build(self, world, pl) -> None:
+        """A pack of the world's arrays as they are, with room for the step's rows."""
+        s = world._store
+        mode = world._mode
+        n, nj = s.bodies.n, s.joints.n
+        c = s.contacts
+        ck, tr, isl, guard = pl._checkpoint, pl.events.contacts, pl._islands, pl._guard
+        ck.ensure(n)
+        if n + 1 > len(mode.SB):  # one more row: the world, for joints
+            mode._alloc(2 * n + 2)
+        if c.capacity > len(mode.R):
+            mode.R = np.zeros((c.capacity, mode.R.shape[1]))
+        tr.scratch(c.capacity)
+        if n > len(isl.parent):
+            isl.parent = np.zeros(2 * n, dtype=np.int64)
+            isl.min_t = np.zeros(2 * n)
+        links, JF, JI, JW, JS, kinds, exclude = _NO_LINKS, None, None, None, None, None, pl._no_keys
+        if nj:
+            if nj > len(isl._links):
+                isl._links = np.zeros((2 * nj, 3), dtype=np.int64)
+            work = joint_work(s)
+            W, JS = work.update(s)
+            links, JW, kinds, exclude = isl._links, W._replace(SB=mode.SB), work._kinds, work.exclude
+            JF, JI = s.joints.arrays.flat
+        S = self.S
+        S[:] = 0
+        S[S_N], S[S_NF], S[S_NS], S[S_NJ] = n, s.fixtures.n, s.springs.n, nj
+        S[S_NC], S[S_NTOUCH], S[S_LIMIT] = c.n, tr.n, world.max_pairs
+        self._keys = (tr.keys, tr._keys2)
+        self.P = StepPack(pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
+                          *s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.verts.arrays.flat,
+                          *s.springs.arrays.flat, *c.cur_cols.flat, *c.prev_cols.flat, pl._pairs, exclude,
+                          ck.X, ck.Q, ck.V, ck.W, ck.bad, ck.why, ck.count, guard.start, guard.end,
+                          tr.keys, tr._keys2, tr.begin, tr._begin2, tr._absent, tr._absent2,
+                          isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, JF, JI, JW, JS, kinds,
+                          1 if c.full else None)
+        self.key = None  # the caller keys it
+
+    # -- the step ------------------------------------------------------------
+    def step(self, world, pl, dt: float) -> bool:
+        """One step through the driver; False (nothing done) when it does not cover the world."""
+        par = pl.params(world)
+        key = self._key(world, pl, par)
+        if key != self.key:
+            self.P = None
+            if self.usable(world, pl, par):
+                self.build(world, pl)
+            self.key = key
+        if self.P is None:
+            return False
+        s = world._store
+        pl.refresh_settings(world, dt)
+        world._mode.derive(pl.ctx, par, s)
+        h = par.get("h")
+        S, D = self.S, self.D
+        S[S_STEP] = world.steps
+        S[S_SLEEP] = world.sleeping
+        D[D_CADOPT] = s.contacts.adopt_factor(h, world.steps)
+        D[D_JADOPT] = s.joints.adopt_factor(h, world.steps) if s.joints.n else 1.0
+        D[D_GROWTH] = world.energy_guard
+        D[D_GMAG] = math.hypot(world._gravity[0], world._gravity[1])
+        t0 = time.perf_counter()
+        code = soft_world_step(self.P)
+        while drv.OK < code < drv.NONFINITE:
+            self._grow(world, pl, code)
+            code = soft_world_step(self.P)
+        elapsed = time.perf_counter() - t0
+        if code != drv.OK:
+            self._refused(world, pl, code)
+        self._accepted(world, pl, dt, elapsed)
+        return True
+
+    def _grow(self, world, pl, code: int) -> None:
+        """Make room for what the driver found short (or raise what is over the limit)."""
+        s = world._store
+        need = int(self.S[S_NEED])
+        if code == drv.TOO_MANY_PAIRS:
+            try:
+                check_pairs(need, world.max_pairs, s.fixtures.n)
+            except SimulationError as err:
+                pl.refuse(world, err, "collide")
+        elif code == drv.GROW_PAIRS:
+            pl._pairs = np.empty((need + need // 2 + 16, 2), np.int32)
+        elif code == drv.GROW_ROWS:
+            s.contacts.reserve(max(need, int(self.S[S_NTOUCH])), world.max_pairs)
+        elif code == drv.NEED_FULL:
+            s.contacts.full = True
+        elif code == drv.JOINT_KINDS:
+            joint_work(s)._key = None  # the system is rebuilt for the bodies' new kinds
+        step, sleep = self.S[S_STEP], self.S[S_SLEEP]
+        self.build(world, pl)
+        self.key = self._key(world, pl, pl.params(world))
+        self.S[S_STEP], self.S[S_SLEEP] = step, sleep
+
+    def _mirror(self, world) -> None:
+        """The contact tables swapped inside the driver: so do the Python handles."""
+        c = world._store.contacts
+        c.swap()
+        c.n = int(self.S[S_NC])
+
+    def _refused(self, world, pl, code: int) -> None:
+        self._mirror(world)
+        if code == drv.NONFINITE:
+            pl._fail(world, pl._checkpoint.slots(int(self.S[S_KBAD])))
+        g = pl._guard
+        pl._gained(world, float(g.G[E_OUT]), float(g.G[LIMIT_OUT]))
+
+    def _accepted(self, world, pl, dt: float, elapsed: float) -> None:
+        self._mirror(world)
+        S = self.S
+        s = world._store
+        if s.joints.n:
+            after_step(s, int(S[S_BROKEN]))
+        pl.n_awake = int(S[S_NAWAKE]) if world.sleeping else -1
+        pl.npairs = int(S[S_NPAIRS])
+        pl.profile.defer(self.T, elapsed)
+        world._time += dt
+        world.steps += 1
+        world.fault = None
+        pl.events._sensed = False
+        pl.events.commit(world, int(S[S_NT]), int(S[S_NB]), int(S[S_NA]))
+        tr = pl.events.contacts
+        if tr.keys is not self._keys[int(S[S_EPAR])]:  # the merge kept sleeping ends: new arrays
+            self.key = None

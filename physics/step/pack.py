@@ -1,0 +1,54 @@
+"""The step pack: every array one step reads or writes, behind one compiled-call argument.
+
+Unboxing costs per array argument (about 150 ns each, docs/flat-step.md); a step over some
+fifty arrays would spend several microseconds at the boundary alone.  A numba StructRef holds
+references to the same numpy arrays (no copy) and crosses the boundary as one object (about
+0.6 us whatever it holds), so the driver (driver.py) takes the pack and nothing else.
+
+Fields a world may lack (the joint tables, the whole narrow phase) are None; the pack's numba
+type then differs and the driver compiled for it contains none of that code, as optional.py
+does for the kernels.  The Python side (one_call.py) builds a pack when the world's structure
+changes and keeps it between steps.
+"""
+from __future__ import annotations
+
+from numba import types
+from numba.experimental import structref
+
+#: the fields, in constructor order
+FIELDS = (
+    # the step context, the mode's parameters, the driver's int state (S_* slots, driver.py),
+    # its float inputs (D_* slots), its cycle stamps, the energy guard's state (energy_bound.py)
+    "ctx", "par", "S", "D", "T", "G",
+    # the tables' flat arrays (store/flat.py): bodies, fixtures, vertices, springs
+    "BF", "BI", "FF", "FI", "ghost", "wghost", "VF", "VI", "SF", "SI",
+    # the two contact tables, this step's and the last (their roles swap every step: S_CPAR)
+    "CAF", "CAI", "CApt", "CBF", "CBI", "CBpt",
+    # broad-phase pairs, the body pairs joints exclude from colliding
+    "pairs", "exclude",
+    # the checkpoint (checkpoint.py), the guard's sums before and after (energy_sums.py)
+    "X", "Q", "V", "W", "bad", "why", "count", "start", "end",
+    # the touching sets and their spares (contact_events.py; roles swap with S_EPAR)
+    "EK0", "EK1", "EB0", "EB1", "EA0", "EA1",
+    # islands (islands.py) and the joints' links for them
+    "parent", "min_t", "label", "links",
+    # soft_step's contact scratch and body rows
+    "R", "SB",
+    # joints (None without): table, scratch, global system, the joined bodies' kinds
+    "JF", "JI", "JW", "JS", "kinds",
+    # the narrow phase's whole kernel (1) or only its lean one (None: collision/narrowphase/kernel.py)
+    "full",
+)
+
+
+@structref.register
+class StepPackType(types.StructRef):
+    def preprocess_fields(self, fields):
+        return tuple((name, types.unliteral(t)) for name, t in fields)
+
+
+class StepPack(structref.StructRefProxy):
+    """The Python handle of a pack (build it with ``StepPack(*values)`` in FIELDS order)."""
+
+
+structref.define_proxy(StepPack, StepPackType, list(FIELDS))
