@@ -154,9 +154,11 @@ class ContactBuffer:
     def reserve(self, need: int, limit: int | None = None) -> None:
         """Room for ``need`` rows before a step's swap (the current rows are kept)."""
         if need > self.capacity:
+            n = self.n
             self.swap()
             self.ensure(need, limit)
             self.swap()
+            self.n = n
 
     def forget_impulses(self) -> None:
         """Zero every carried point state of both tables (after a refused step)."""

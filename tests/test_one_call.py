@@ -1,0 +1,145 @@
+"""The step as one compiled call (physics/step/soft_driver.py) against the pipeline's stages.
+
+Both paths run the same kernels in the same order, so a world stepped through the driver must
+end bit for bit where the same world stepped through the pipeline ends: every field of every
+body, and the contact and joint impulses.  The scenes make the driver grow each array it may
+find short (pairs, contact rows, the touching sets), switch to the narrow phase's whole kernel,
+rebuild the joint system when a joined body changes kind, and sleep.
+"""
+import math
+
+import numpy as np
+import pytest
+
+import physics
+from physics.scene import scene_from_dict
+from bench.small_descs import small
+
+
+def _pile(n=40):
+    """n boxes created on top of each other: n (n - 1) / 2 + n pairs at once (> 256, the pair
+    buffer's and the contact table's first size)."""
+    w = physics.World(gravity=(0, -10))
+    w.add_body(physics.Polygon.box(10, 0.5), position=(0, -0.25), kind="static")  # top at y = 0
+    for i in range(n):
+        w.add_body(physics.Polygon.box(0.5, 0.5), position=(0.01 * i, 0.6 + 0.02 * i))
+    return w
+
+
+def _rounded():
+    """A capsule and a disc on a box: pairs the narrow phase's lean kernel leaves to the whole one."""
+    w = physics.World(gravity=(0, -10))
+    w.add_body(physics.Polygon.box(10, 0.5), position=(0, -0.25), kind="static")  # top at y = 0
+    w.add_body(physics.Capsule((-0.5, 0), (0.5, 0), 0.2), position=(0, 0.19))
+    w.add_body(physics.Circle(0.3), position=(2, 0.29))
+    w.add_body(physics.Polygon.box(0.5, 0.5, radius=0.05), position=(-2, 0.29))
+    return w
+
+
+SCENES = {
+    "box": lambda: scene_from_dict(small("box")),
+    "stack5": lambda: scene_from_dict(small("stack5")),
+    "pendulum": lambda: scene_from_dict(small("pendulum")),
+    "chain10": lambda: scene_from_dict(small("chain10")),
+    "cradle5": lambda: scene_from_dict(small("cradle5")),
+    "pile40": _pile,
+    "rounded": _rounded,
+}
+
+
+def _run(make, driver: bool, steps: int, edit=None):
+    """``steps`` steps of a new world through the driver or the pipeline; the number of contact
+    begin events seen on the way is kept as ``w.begins``."""
+    w = make()
+    w._pipeline.one_call.enabled = driver
+    w.begins = 0
+    for k in range(steps):
+        if edit is not None:
+            edit(w, k)
+        w.step()
+        w.begins += len(w.contact_events().begin)
+    return w
+
+
+def _same(a, b):
+    sa, sb = a._store, b._store
+    n = sa.bodies.n
+    for name, col in sa.bodies.arrays.items():
+        np.testing.assert_array_equal(col[:n], sb.bodies.arrays[name][:n], err_msg=f"body field {name}")
+    nc = sa.contacts.n
+    assert nc == sb.contacts.n
+    np.testing.assert_array_equal(sa.contacts.cur.jn[:nc], sb.contacts.cur.jn[:nc])
+    np.testing.assert_array_equal(sa.contacts.cur.key[:nc], sb.contacts.cur.key[:nc])
+    nj = sa.joints.n
+    np.testing.assert_array_equal(sa.joints.view.impulse[:nj], sb.joints.view.impulse[:nj])
+    assert a.steps == b.steps and a.time == b.time and a.begins == b.begins
+    ta, tb = a._pipeline.events.contacts, b._pipeline.events.contacts
+    np.testing.assert_array_equal(ta.keys[:ta.n], tb.keys[:tb.n])  # the touching sets
+
+
+@pytest.mark.parametrize("scene", sorted(SCENES))
+def test_driver_steps_bit_for_bit_as_the_pipeline(scene):
+    a = _run(SCENES[scene], True, 120)
+    assert a._pipeline.one_call.P is not None, "the driver did not run this world"
+    b = _run(SCENES[scene], False, 120)
+    assert b._pipeline.one_call.P is None
+    _same(a, b)
+
+
+def test_driver_grows_what_it_found_short():
+    w = _run(_pile, True, 3)
+    assert w._pipeline.npairs > 256 and w._store.contacts.n > 256
+    assert w._store.contacts.capacity >= w._store.contacts.n
+
+
+def test_driver_switches_to_the_whole_narrow_phase():
+    w = _run(_rounded, True, 2)
+    assert w._store.contacts.full and w._store.contacts.n == 3
+
+
+def test_joined_body_changing_kind_rebuilds_the_joint_system():
+    def edit(w, k):
+        if k == 30:
+            w.bodies[0].kind = "static"  # the pendulum's bob: its joint no longer moves anything
+        if k == 60:
+            w.bodies[0].kind = "dynamic"
+    a = _run(SCENES["pendulum"], True, 120, edit)
+    b = _run(SCENES["pendulum"], False, 120, edit)
+    _same(a, b)
+
+
+def test_sleeping_and_waking_match_the_pipeline():
+    def make():
+        w = scene_from_dict(small("stack5"))
+        w.sleeping = True
+        return w
+
+    def edit(w, k):
+        if k == 250:
+            w.bodies[-1].apply_impulse((2.0, 0.0))
+    a = _run(make, True, 400, edit)
+    b = _run(make, False, 400, edit)
+    _same(a, b)
+    assert a._pipeline.n_awake == b._pipeline.n_awake
+
+
+def test_driver_profile_splits_the_step_into_its_stages():
+    w = _run(SCENES["stack5"], True, 10)
+    p = w.profile
+    stages = ("begin", "broadphase", "narrowphase", "solve", "islands", "finish")
+    assert all(p[s] >= 0.0 for s in stages)
+    assert math.isclose(sum(p[s] for s in stages), p["step"], rel_tol=1e-6)
+    assert p["solve"] > 0.0 and p["narrowphase"] > 0.0
+
+
+def test_worlds_the_driver_leaves_to_the_pipeline():
+    w = scene_from_dict(small("stack5"))
+    w.solver = "sequential_impulse"
+    w.step()
+    assert w._pipeline.one_call.P is None
+    w.solver = "soft_step"
+    w.step()
+    assert w._pipeline.one_call.P is not None
+    w.bodies[0].fixtures[0].sensor = True  # a sensor (the static ground): the pipeline's events stage
+    w.step()
+    assert w._pipeline.one_call.P is None
