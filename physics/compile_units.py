@@ -11,8 +11,9 @@ each with its own units; a later process loads them all from disk.
 
 Unit names: ``broad:<broadphase>``, ``narrow`` (lean), ``narrow:full``, ``solve:<mode>:<integrator>``,
 ``joints:<mode>:<integrator>``, ``guard``, ``frame``, ``extras`` (quadtree cells, shape casts),
-``coloured`` (soft_step's coloured layout) and ``step:<mode>:<integrator>:<broadphase>[:full]``
-(a whole step: whatever the others left).  The sandbox, CI (``python -m physics precompile``)
+``coloured`` (soft_step's coloured layout) and ``step:<mode>:<integrator>:<broadphase>[:full][:joints]``
+(a whole step: whatever the others left, such as the one-call step's variant for a world with
+the whole narrow phase or with joints: physics/step/soft_driver.py).  The sandbox, CI (``python -m physics precompile``)
 and the tuner all go through here.
 """
 from __future__ import annotations
@@ -79,7 +80,9 @@ def _guard():
     p = w._pipeline
     p._refresh(w, w.dt)
     p.open_step(w)
+    p._guard.begin(w)
     p.close_step(w)
+    p._guard.excess(w, w.dt)
 
 
 def _frame():
@@ -113,9 +116,13 @@ def _coloured():
         w.step()
 
 
-def _step(solver, integrator, bp, kind="lean"):
+def _step(solver, integrator, bp, *flags):
+    """Three whole steps of the probe world (``full``: with the whole narrow phase; ``joints``:
+    with a joint), so the one-call step's variant for such a world is compiled too."""
     w = probe_world(solver, integrator, bp)
-    w._store.contacts.full = kind == "full"
+    w._store.contacts.full = "full" in flags
+    if "joints" in flags:
+        w.add_joint("revolute", w.bodies[2], w.bodies[1], anchor=(0.1, 1.0))
     for _ in range(3):
         w.step()
     w.render_data()
@@ -135,7 +142,8 @@ def _joints(solver, integrator):
     w.add_joint("wheel", box, w.bodies[4], anchor=(1.6, 1.3))
     w.add_joint("motor", w.bodies[5], ground)
     w.add_joint("mouse", w.bodies[4], None, target=(2.0, 2.0))
-    for _ in range(3):
+    for k in range(3):  # the pipeline's stages once, then the one-call step where the mode has one
+        w._pipeline.one_call.enabled = k > 0
         w.step()
 
 
@@ -167,7 +175,8 @@ def units(world=None, modes=None) -> list[str]:
         out = [f"solve:{world.solver}:{world.integrator}", narrow, f"broad:{bp}", "guard", "frame"]
         if world._store.joints.n:
             out.append(f"joints:{world.solver}:{world.integrator}")
-        out.append(f"step:{world.solver}:{world.integrator}:{bp}" + (":full" if narrow != "narrow" else ""))
+        out.append(f"step:{world.solver}:{world.integrator}:{bp}" + (":full" if narrow != "narrow" else "")
+                   + (":joints" if world._store.joints.n else ""))
         return out
     modes = options.SOLVERS if modes is None else tuple(modes)
     out = []
@@ -181,6 +190,8 @@ def units(world=None, modes=None) -> list[str]:
     out.append("extras")
     out += [f"step:{m}:{options.DEFAULT_INTEGRATOR if options.DEFAULT_INTEGRATOR in _integrators(m) else _integrators(m)[0]}:sweep:full"
             for m in modes]
+    if options.DEFAULT_SOLVER in modes:  # the one-call step's variants the units above leave out
+        out += [f"step:{options.DEFAULT_SOLVER}:{options.DEFAULT_INTEGRATOR}:brute:full" + j for j in ("", ":joints")]
     return out
 
 

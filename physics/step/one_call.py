@@ -20,7 +20,7 @@ from ..errors import SimulationError
 from ..solvers.soft_step.layout import LAYOUTS
 from . import soft_driver as drv
 from .energy_bound import E_OUT, LIMIT_OUT
-from .pack import StepPack
+from .pack import new_pack
 from .soft_driver import (D_CADOPT, D_GMAG, D_GROWTH, D_JADOPT, S_BROKEN, S_EPAR, S_KBAD, S_LIMIT, S_N, S_NA,
                           S_NAWAKE, S_NB, S_NC, S_NEED, S_NF, S_NJ, S_NPAIRS, S_NS, S_NT, S_NTOUCH, S_SLEEP, S_STEP,
                           soft_world_step)
@@ -85,7 +85,7 @@ class OneCall:
         S[S_N], S[S_NF], S[S_NS], S[S_NJ] = n, s.fixtures.n, s.springs.n, nj
         S[S_NC], S[S_NTOUCH], S[S_LIMIT] = c.n, tr.n, world.max_pairs
         self._keys = (tr.keys, tr._keys2)
-        self.P = StepPack(pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
+        self.P = new_pack(pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
                           *s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.verts.arrays.flat,
                           *s.springs.arrays.flat, *c.cur_cols.flat, *c.prev_cols.flat, pl._pairs, exclude,
                           ck.X, ck.Q, ck.V, ck.W, ck.bad, ck.why, ck.count, guard.start, guard.end,

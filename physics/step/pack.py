@@ -15,6 +15,8 @@ from __future__ import annotations
 from numba import types
 from numba.experimental import structref
 
+from .._jit import kernel
+
 #: the fields, in constructor order
 FIELDS = (
     # the step context, the mode's parameters, the driver's int state (S_* slots, driver.py),
@@ -52,3 +54,10 @@ class StepPack(structref.StructRefProxy):
 
 
 structref.define_proxy(StepPack, StepPackType, list(FIELDS))
+
+
+@kernel
+def new_pack(*values):
+    """A pack of ``values`` (FIELDS order).  ``StepPack(...)`` would compile numba's own
+    constructor for each new pack type in every process (it is not cached); this one is."""
+    return StepPack(*values)

@@ -8,7 +8,7 @@ import pytest
 from sandbox_pixels import ROOT, body_pixels
 from test_saving import centre, scene_point
 from test_tools import body, to_screen
-from test_world_bound import runner_scene
+from test_world_bound import RUNNER_SCENE_BODIES, runner_scene
 
 pytestmark = pytest.mark.app
 
@@ -29,7 +29,8 @@ def test_soft_body_keeps_its_bodies(launch):
 def test_a_removal_leaves_the_document_clean(launch, tmp_path):
     app = launch(runner_scene(tmp_path / "runner.json"))
     st0 = app.wait_ready(2)
-    n0 = st0["n_bodies"]
+    n0 = RUNNER_SCENE_BODIES
+    assert st0["n_bodies"] == n0, "the runner left before the sandbox was ready"
     st = app.wait(lambda s: s["n_bodies"] == n0 - 1, 30, "the runner to leave the bound")
     assert not st["dirty"], "the world bound's removal marked the scene as edited"
     app.xdo("mousemove", *scene_point(st))
@@ -51,7 +52,8 @@ def test_a_removal_leaves_the_document_clean(launch, tmp_path):
 def test_undo_of_a_removal_brings_the_body_back_inside_at_rest(launch, tmp_path):
     app = launch(runner_scene(tmp_path / "runner.json"))
     st0 = app.wait_ready(2)
-    n0 = st0["n_bodies"]
+    n0 = RUNNER_SCENE_BODIES
+    assert st0["n_bodies"] == n0, "the runner left before the sandbox was ready"
     lo, hi = st0["bound"]["lo"], st0["bound"]["hi"]
     app.wait(lambda s: s["n_bodies"] == n0 - 1, 30, "the runner to leave the bound")
     app.xdo("mousemove", *scene_point(st0))

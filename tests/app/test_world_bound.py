@@ -13,13 +13,19 @@ from test_tools import to_screen
 pytestmark = pytest.mark.app
 
 
+#: the bodies of runner_scene: ground, stay, runner
+RUNNER_SCENE_BODIES = 3
+
+
 def runner_scene(path):
     data = {"format": "stelkropp.scene", "version": 1, "name": "runner",
             "camera": {"center": [0.0, 3.0], "zoom": 20.0},
             "bodies": [
                 {"name": "ground", "kind": "static", "shape": {"box": [16, 1]}, "position": [0, -0.5]},
                 {"name": "stay", "shape": {"box": [1, 1]}, "position": [-3, 0.5]},
-                {"name": "runner", "shape": {"box": [1, 1]}, "position": [5, 0.5], "velocity": [30, 0],
+                # 12 m/s: off the ground's end at x = 8 m, out through the bound's side (x = 18 m) about
+                # 1.1 s in, after the sandbox is ready (0.4 s here), so the tests see all three bodies first
+                {"name": "runner", "shape": {"box": [1, 1]}, "position": [5, 0.5], "velocity": [12, 0],
                  "friction": 0.05},
             ]}
     path.write_text(json.dumps(data))
@@ -39,7 +45,8 @@ def test_bodies_that_leave_the_bound_are_removed_with_an_undo(launch, tmp_path):
     lo, hi = st0["bound"]["lo"], st0["bound"]["hi"]
     # from the extent (ground 16 m x 1.5 m, stay and runner): 10 m beyond it, 20 m above
     assert lo == pytest.approx([-18.0, -11.0], abs=0.05) and hi == pytest.approx([18.0, 21.0], abs=0.05), st0["bound"]  # AABBs carry a 1 cm margin
-    n0 = st0["n_bodies"]
+    n0 = RUNNER_SCENE_BODIES
+    assert st0["n_bodies"] == n0, "the runner left before the sandbox was ready"
     st = app.wait(lambda s: s["n_bodies"] == n0 - 1, 30, "the runner to leave the bound")
     assert all(b["name"] != "runner" for b in st["bodies"])
     assert any("left the world bound" in m for m in st["messages"]), st["messages"]
