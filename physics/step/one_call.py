@@ -15,6 +15,7 @@ import numpy as np
 
 from ..collision import broadphase
 from ..collision.broadphase.limit import check_pairs
+from ..collision.narrowphase.kernel import manifold_scratch
 from ..constraints.joints.work import after_step, joint_work
 from ..errors import SimulationError
 from ..solvers.soft_step.layout import LAYOUTS
@@ -38,6 +39,9 @@ class OneCall:
         self.enabled = True  # False: every step goes through the pipeline's stages (tests compare)
         self.S, self.D, self.T = drv.empty_state()
         self._keys = ()  # the touching sets' arrays in the pack (to notice a replaced one)
+        self._sort = (np.zeros(0, np.int64), np.zeros(0, np.int64))  # the pairs' keys and order
+        self._scratch = None  # the narrow phase's manifold scratch
+        self._V0 = None  # soft_step's start-velocity scratch
 
     # -- whether and what --------------------------------------------------
     @staticmethod
@@ -80,6 +84,10 @@ class OneCall:
             W, JS = work.update(s)
             links, JW, kinds, exclude = isl._links, W._replace(SB=mode.SB), work._kinds, work.exclude
             JF, JI = s.joints.arrays.flat
+        if len(self._sort[0]) < len(pl._pairs):
+            self._sort = (np.zeros(len(pl._pairs), np.int64), np.zeros(len(pl._pairs), np.int64))
+        if self._scratch is None:
+            self._scratch = manifold_scratch()
         S = self.S
         S[:] = 0
         S[S_N], S[S_NF], S[S_NS], S[S_NJ] = n, s.fixtures.n, s.springs.n, nj
@@ -88,11 +96,19 @@ class OneCall:
         self.P = new_pack(pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
                           *s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.verts.arrays.flat,
                           *s.springs.arrays.flat, *c.cur_cols.flat, *c.prev_cols.flat, pl._pairs, exclude,
+                          *self._sort, self._scratch,
                           ck.X, ck.Q, ck.V, ck.W, ck.bad, ck.why, ck.count, guard.start, guard.end,
                           tr.keys, tr._keys2, tr.begin, tr._begin2, tr._absent, tr._absent2,
-                          isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, JF, JI, JW, JS, kinds,
+                          isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, self._v0(len(mode.SB)),
+                          JF, JI, JW, JS, kinds,
                           1 if c.full else None)
         self.key = None  # the caller keys it
+
+    def _v0(self, rows: int) -> np.ndarray:
+        """soft_step's start-velocity scratch, ``rows`` long."""
+        if self._V0 is None or len(self._V0) < rows:
+            self._V0 = np.empty((rows, 3))
+        return self._V0
 
     # -- the step ------------------------------------------------------------
     def step(self, world, pl, dt: float) -> bool:

@@ -26,16 +26,17 @@ FIELDS = (
     "BF", "BI", "FF", "FI", "ghost", "wghost", "VF", "VI", "SF", "SI",
     # the two contact tables, this step's and the last (their roles swap every step: S_CPAR)
     "CAF", "CAI", "CApt", "CBF", "CBI", "CBpt",
-    # broad-phase pairs, the body pairs joints exclude from colliding
-    "pairs", "exclude",
+    # broad-phase pairs, the body pairs joints exclude from colliding, the pairs' keys and order
+    # and the narrow phase's manifold scratch (collision/narrowphase/kernel.py: collide_with)
+    "pairs", "exclude", "pkeys", "porder", "mscratch",
     # the checkpoint (checkpoint.py), the guard's sums before and after (energy_sums.py)
     "X", "Q", "V", "W", "bad", "why", "count", "start", "end",
     # the touching sets and their spares (contact_events.py; roles swap with S_EPAR)
     "EK0", "EK1", "EB0", "EB1", "EA0", "EA1",
     # islands (islands.py) and the joints' links for them
     "parent", "min_t", "label", "links",
-    # soft_step's contact scratch and body rows
-    "R", "SB",
+    # soft_step's contact scratch, body rows and start velocities
+    "R", "SB", "V0",
     # joints (None without): table, scratch, global system, the joined bodies' kinds
     "JF", "JI", "JW", "JS", "kinds",
     # the narrow phase's whole kernel (1) or only its lean one (None: collision/narrowphase/kernel.py)

@@ -18,7 +18,7 @@ import numpy as np
 from .._jit import kernel
 from ..collision.broadphase.brute import brute_pairs
 from ..collision.broadphase.fixture_filter import filter_pairs
-from ..collision.narrowphase.kernel import collide_kernel
+from ..collision.narrowphase.kernel import collide_with, sort_pairs
 from ..constraints.joints.kinds import kinds_changed
 from ..solvers.soft_step.kernel import soft_step
 from ..store.flat import bodies_view, contacts_view, fixtures_view, springs_view, verts_view
@@ -125,7 +125,9 @@ def soft_world_step(P):
             S[S_NTOUCH] > (P.EA1 if S[S_EPAR] == 0 else P.EA0).shape[0]:
         return GROW_ROWS
     T[2] = cycles()
-    nc = collide_kernel(P.ctx, B, F, verts_view(P.VF, P.VI), P.pairs, npairs, C, Cp, S[S_NC], P.full)
+    sort_pairs(F.id, P.pairs, npairs, P.pkeys, P.porder)
+    nc = collide_with(P.ctx, B, F, verts_view(P.VF, P.VI), P.pairs, npairs, C, Cp, S[S_NC], P.full, P.pkeys,
+                      P.porder, P.mscratch)
     if nc < 0:
         return NEED_FULL
     # the rows are final: the tables' roles swap (Python mirrors it: ContactBuffer.swap)
@@ -136,7 +138,8 @@ def soft_world_step(P):
     T[3] = cycles()
     _scale_impulses(C, nc, D[D_CADOPT])
     _joints_ready(P.JF, P.JI, P.BF, P.BI, S[S_NJ], P.kinds, D[D_JADOPT])
-    S[S_BROKEN] = soft_step(P.ctx, P.par, B, C, Sp, P.R, P.SB, optional_joints(P.JF, P.JI), P.JW, P.JS)
+    S[S_BROKEN] = soft_step(P.ctx, P.par, B, C, Sp, P.R, P.SB, optional_joints(P.JF, P.JI), P.JW, P.JS,
+                              P.V0)
     T[4] = cycles()
     if S[S_SLEEP]:
         links = _links(P.JF, P.JI, S[S_NJ], P.links)

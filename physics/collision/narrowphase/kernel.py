@@ -213,9 +213,41 @@ def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev, full=None):
     """
     keys = pair_keys(F, pairs, npairs)
     order = np.argsort(keys)
-    sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f = manifold_scratch()
+    return collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, manifold_scratch())
+
+
+@kernel
+def sort_pairs(fid, pairs, npairs, keys, order):
+    """The pairs' keys (``pair_keys``; ``fid``: the fixtures' ids) into ``keys`` and their
+    ascending order into ``order``, both at least ``npairs`` long, without allocating for a small
+    world: an insertion sort up to 32 pairs (the keys are distinct, so any sort gives this
+    order), numpy's beyond."""
+    for k in range(npairs):
+        ia = fid[pairs[k, 0]]
+        ib = fid[pairs[k, 1]]
+        if ia > ib:
+            ia, ib = ib, ia
+        keys[k] = (ia << 32) | ib
+    if npairs > 32:
+        order[:npairs] = np.argsort(keys[:npairs])
+        return
+    for k in range(npairs):
+        j = k
+        while j > 0 and keys[order[j - 1]] > keys[k]:
+            order[j] = order[j - 1]
+            j -= 1
+        order[j] = k
+
+
+# _nrt=False: it allocates nothing, and with numba's runtime every array of the five tables it
+# takes by value would be reference-counted on entry and exit (about 200 atomic updates a call)
+@kernel(_nrt=False)
+def collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, scratch):
+    """``collide_kernel`` with the pairs' ``keys`` and ``order[:npairs]`` given and the manifold
+    ``scratch`` (manifold_scratch's arrays) reused: the step driver keeps them between steps."""
+    sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f = scratch
     c = ctx[0]
-    return _rows(B, F, V, pairs, order, keys, C, P, n_prev, c.narrowphase, full, c.dt, c.spec,
+    return _rows(B, F, V, pairs, order[:npairs], keys, C, P, n_prev, c.narrowphase, full, c.dt, c.spec,
                  sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f)
 
 

@@ -45,10 +45,11 @@ GLOBAL = 0  # index of "global" in the joint_solver setting's choices
 
 
 @kernel
-def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS):
+def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
     # (JW.SB is SB: the joints work on the same body rows as the contacts)
     """One step of ``ctx[0].dt`` in ``par[0].substeps`` sub-steps (see the module doc); returns the
-    number of joints that broke."""
+    number of joints that broke.  ``V0``: scratch of at least n rows of 3 (the sub-step's start
+    velocities, which cap the bounces)."""
     c = ctx[0]
     p = par[0]
     n = c.n
@@ -71,7 +72,6 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS):
         if C.e[k] != 0.0:
             bouncy = True
             break
-    V0 = np.empty((n if bouncy else 0, 3))
     for _ in range(p.substeps):
         integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
         if c.ns > 0:  # the spring solver works on the body table
@@ -110,4 +110,4 @@ def soft_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, R, SB, JF, JI, JW, JS)
     """``soft_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
     ``JF`` None: a world without joints (no joint code is compiled)."""
     B, C, S = bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI)
-    return soft_step(ctx, par, B, C, S, R, SB, optional_joints(JF, JI), JW, JS)
+    return soft_step(ctx, par, B, C, S, R, SB, optional_joints(JF, JI), JW, JS, np.empty((ctx[0].n, 3)))
