@@ -193,3 +193,26 @@ def test_the_bound_does_not_depend_on_where_the_origin_is():
     here, up = _refusal_step(0.0), _refusal_step(1e5)
     assert here is not None and up is not None
     assert abs(here - up) <= 2, (here, up)
+
+
+@pytest.mark.parametrize("height", [0.0, 1e5])
+def test_the_numpy_reference_is_the_guards_own_measure(height):
+    """energies() (numpy, for tests and tools) gives the E and S the step's kernels compute
+    (energy_sums.guard_sums, energy_bound.energy_and_scale): gravity in S counts from the lowest
+    dynamic body, so the same world 100 km up has the same S."""
+    from physics.step.energy_bound import energy_and_scale
+    scales = []
+    w = physics.World(gravity=(0.0, -9.81))
+    w.add_body(physics.Polygon.box(10, 1), kind="static", position=(0.0, height - 0.5))
+    low = w.add_body(physics.Polygon.box(1, 1), position=(0.0, height + 0.5))
+    w.add_body(physics.Circle(0.3), position=(1.5, height + 3.0), velocity=(1.0, 0.0))
+    w.add_spring(low, None, anchor_b=(0.0, height + 4.0), stiffness=20.0, rest_length=2.0)
+    for _ in range(5):
+        w.step()
+        e, s = energies(w)
+        ek, sk = energy_and_scale(w._pipeline._guard.end)
+        assert e == pytest.approx(ek, rel=1e-9, abs=1e-9 * abs(ek) + 1e-6) and s == pytest.approx(sk, rel=1e-9)
+        scales.append(s)
+    # the circle (density 1: pi 0.3^2 kg) 2.5 m above the box: about m g 2.5 m of scale at any height
+    assert scales[0] >= 0.9 * math.pi * 0.09 * 9.81 * 2.5
+    assert scales[0] < 1e3  # not m g 1e5 m

@@ -61,8 +61,10 @@ PUSH_SPEED = 10.0
 
 
 def energies(world) -> tuple[float, float]:
-    """(total energy E, its scale S = KE + elastic + |gravitational|) of the world in J: the numpy
-    reference of what energy_sums.guard_sums computes inside the step (tests and tools use it)."""
+    """(total energy E, its scale S) of the world in J: the numpy reference of what the step's
+    kernels compute (energy_sums.guard_sums, energy_bound.energy_and_scale; tests and tools use
+    it).  S = KE + elastic + sum_i m_i |g| (h_i - h_min): gravity counts from the lowest dynamic
+    body, not from the origin."""
     store = world._store
     n = store.bodies.n
     B = store.bodies.view
@@ -71,11 +73,13 @@ def energies(world) -> tuple[float, float]:
     with np.errstate(all="ignore"):
         m = B.m[dyn]
         ke = 0.5 * float((m * (B.v[dyn] ** 2).sum(1) + B.inertia[dyn] * B.w[dyn] ** 2).sum())
-        pe = -float((m[:, None] * B.x[dyn] @ world._gravity).sum())
+        per_kg = -(B.x[dyn] @ world._gravity)  # gravitational potential per kg (J/kg)
+        pe = float((m * per_kg).sum())
+        lowest = float(per_kg.min()) if len(dyn) else 0.0
         elastic = 0  # (the empty sum's value)
         if store.springs.n:
             elastic = sum(0.5 * s.stiffness * (s.length - s.rest_length) ** 2 for s in world.springs)
-    return ke + pe + elastic, ke + elastic + abs(pe)
+    return ke + pe + elastic, ke + elastic + max(pe - float(m.sum()) * lowest, 0.0)
 
 
 
