@@ -33,14 +33,20 @@ BIAS = 1e-3          # reference-face hysteresis, relative to the smaller body
 def pair_keys(F, pairs, npairs):
     """Keys of the fixture pairs oriented by id (lower id first)."""
     keys = np.empty(npairs, np.int64)
-    fid = F.id  # bound once: each F.id in the loop would be a reference-count pair (runtime on here)
+    # F.id bound once: each F.id in the loop would be a reference-count pair (runtime on here)
+    pair_keys_into(F.id, pairs, npairs, keys)
+    return keys
+
+
+@kernel(inline="always")
+def pair_keys_into(fid, pairs, npairs, keys):
+    """``pair_keys`` into ``keys`` (``fid``: the fixtures' ids)."""
     for k in range(npairs):
         ia = fid[pairs[k, 0]]
         ib = fid[pairs[k, 1]]
         if ia > ib:
             ia, ib = ib, ia
         keys[k] = (ia << 32) | ib
-    return keys
 
 
 @kernel(inline="always")
@@ -222,12 +228,7 @@ def sort_pairs(fid, pairs, npairs, keys, order):
     ascending order into ``order``, both at least ``npairs`` long, without allocating for a small
     world: an insertion sort up to 32 pairs (the keys are distinct, so any sort gives this
     order), numpy's beyond."""
-    for k in range(npairs):
-        ia = fid[pairs[k, 0]]
-        ib = fid[pairs[k, 1]]
-        if ia > ib:
-            ia, ib = ib, ia
-        keys[k] = (ia << 32) | ib
+    pair_keys_into(fid, pairs, npairs, keys)
     if npairs > 32:
         order[:npairs] = np.argsort(keys[:npairs])
         return
