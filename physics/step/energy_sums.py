@@ -12,7 +12,7 @@ from __future__ import annotations
 from .._jit import kernel
 from ..store import DYNAMIC, KINEMATIC
 from ..store.flat import bodies_view, joints_view
-from ..store.joints import BROKEN, MOTOR, MOUSE, PRISMATIC, REVOLUTE, WHEEL
+from ..store.joints import BROKEN, MOTOR, MOUSE, REVOLUTE, WHEEL
 from .checkpoint import spring_energy
 
 #: the slots of the sums array: kinetic, gravitational, elastic energy (J), dynamic mass (kg),

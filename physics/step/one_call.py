@@ -22,7 +22,7 @@ from ..solvers.soft_step.layout import LAYOUTS
 from . import soft_driver as drv
 from .energy_bound import E_OUT, LIMIT_OUT
 from .pack import new_pack
-from .soft_driver import (D_CADOPT, D_GMAG, D_GROWTH, D_JADOPT, S_BROKEN, S_EPAR, S_KBAD, S_LIMIT, S_N, S_NA,
+from .soft_driver import (D_CADOPT, D_GMAG, D_GROWTH, D_JADOPT, S_BROKEN, S_CPAR, S_EPAR, S_KBAD, S_LIMIT, S_N, S_NA,
                           S_NAWAKE, S_NB, S_NC, S_NEED, S_NF, S_NJ, S_NPAIRS, S_NS, S_NT, S_NTOUCH, S_SLEEP, S_STEP,
                           soft_world_step)
 
@@ -88,10 +88,10 @@ class OneCall:
             self._sort = (np.zeros(len(pl._pairs), np.int64), np.zeros(len(pl._pairs), np.int64))
         if self._scratch is None:
             self._scratch = manifold_scratch()
-        S = self.S
-        S[:] = 0
+        S = self.S  # the structure's slots; the step's own (S_STEP, S_SLEEP) are step()'s
         S[S_N], S[S_NF], S[S_NS], S[S_NJ] = n, s.fixtures.n, s.springs.n, nj
         S[S_NC], S[S_NTOUCH], S[S_LIMIT] = c.n, tr.n, world.max_pairs
+        S[S_CPAR] = S[S_EPAR] = 0  # the pack's first tables are the current ones
         self._keys = (tr.keys, tr._keys2)
         self.P = new_pack(pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
                           *s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.verts.arrays.flat,
@@ -102,7 +102,6 @@ class OneCall:
                           isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, self._v0(len(mode.SB)),
                           JF, JI, JW, JS, kinds,
                           1 if c.full else None)
-        self.key = None  # the caller keys it
 
     def _v0(self, rows: int) -> np.ndarray:
         """soft_step's start-velocity scratch, ``rows`` long."""
@@ -163,10 +162,8 @@ class OneCall:
             s.contacts.full = True
         elif code == drv.JOINT_KINDS:
             joint_work(s)._key = None  # the system is rebuilt for the bodies' new kinds
-        step, sleep = self.S[S_STEP], self.S[S_SLEEP]
         self.build(world, pl)
         self.key = self._key(world, pl, pl.params(world))
-        self.S[S_STEP], self.S[S_SLEEP] = step, sleep
 
     def _mirror(self, world) -> None:
         """The contact tables swapped inside the driver: so do the Python handles."""

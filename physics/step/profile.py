@@ -42,10 +42,9 @@ class StepProfile:
         self._wall = wall
 
     def start(self) -> None:
-        self._stamps = None
-        times = self.times
-        for k in times:
-            times[k] = 0.0
+        self._stamps = None  # a driver's step before this one: its stamps are not worked out
+        for k in self._times:
+            self._times[k] = 0.0
         self._t = time.perf_counter()
 
     def stamp(self, stage: str) -> None:

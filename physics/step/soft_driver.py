@@ -29,13 +29,13 @@ from .energy_sums import motor_power
 from .frame import begin_step, end_step
 from .islands import joint_links_flat, update_islands
 
-#: P.S slots: counts (bodies, fixtures, springs, joints), the step number, contact rows now and
-#: before, which contact table and which touching set is current, the last touching count,
-#: the broad phase's pairs and their limit, sleeping on, awake bodies, joints broken, the size a
-#: grow code asks for, the touching merge's counts, the non-finite count
-(S_N, S_NF, S_NS, S_NJ, S_STEP, S_NC, S_NPREV, S_CPAR, S_EPAR, S_NTOUCH, S_NPAIRS, S_LIMIT, S_SLEEP, S_NAWAKE,
- S_BROKEN, S_NEED, S_NT, S_NB, S_NA, S_KBAD) = range(20)
-S_SLOTS = 20
+#: P.S slots: counts (bodies, fixtures, springs, joints), the step number, contact rows, which
+#: contact table and which touching set is current, the last touching count, the broad phase's
+#: pairs and their limit, sleeping on, awake bodies, joints broken, the size a grow code asks
+#: for, the touching merge's counts, the non-finite count
+(S_N, S_NF, S_NS, S_NJ, S_STEP, S_NC, S_CPAR, S_EPAR, S_NTOUCH, S_NPAIRS, S_LIMIT, S_SLEEP, S_NAWAKE,
+ S_BROKEN, S_NEED, S_NT, S_NB, S_NA, S_KBAD) = range(19)
+S_SLOTS = 19
 #: P.D slots: the guard's growth r, |g|, the contact and joint impulses' adopt factors
 D_GROWTH, D_GMAG, D_CADOPT, D_JADOPT = range(4)
 D_SLOTS = 4
@@ -54,19 +54,22 @@ def _motors(JF, JI, BF, BI, nj):
 
 
 @kernel
-def _joints_ready(JF, JI, BF, BI, nj, kinds, factor):
-    """False when a joined body changed kind (Python rebuilds the joint system); else the
-    joints' impulses are made to mean this step's span (JointTable.adopt)."""
+def _joints_ready(JF, JI, BF, BI, nj, kinds):
+    """False when a joined body changed kind (Python rebuilds the joint system)."""
     if JF is None:
         return True
-    if kinds_changed(JF, JI, BF, BI, nj, kinds):
-        return False
-    if factor != 1.0:
-        J = optional_joints(JF, JI)
-        for j in range(nj):
-            for r in range(J.impulse.shape[1]):
-                J.impulse[j, r] *= factor
-    return True
+    return not kinds_changed(JF, JI, BF, BI, nj, kinds)
+
+
+@kernel
+def _scale_joint_impulses(JF, JI, nj, r):
+    """JointTable.adopt: the joints' impulses times ``r``."""
+    if JF is None or r == 1.0:
+        return
+    J = optional_joints(JF, JI)
+    for j in range(nj):
+        for k in range(J.impulse.shape[1]):
+            J.impulse[j, k] *= r
 
 
 @kernel
@@ -104,7 +107,7 @@ def soft_world_step(P):
     begin_step(P.ctx, B, F, verts_view(P.VF, P.VI), nf, P.X, P.Q, P.V, P.W, Sp, P.start)
     p_start, dragged = _motors(P.JF, P.JI, P.BF, P.BI, S[S_NJ])
     guard_begin(G, P.start, D[D_GROWTH], p_start, dragged)
-    if not _joints_ready(P.JF, P.JI, P.BF, P.BI, S[S_NJ], P.kinds, 1.0):
+    if not _joints_ready(P.JF, P.JI, P.BF, P.BI, S[S_NJ], P.kinds):
         return JOINT_KINDS
     T[1] = cycles()
     npairs = brute_pairs(F, nf, P.pairs)
@@ -132,12 +135,11 @@ def soft_world_step(P):
         return NEED_FULL
     # the rows are final: the tables' roles swap (Python mirrors it: ContactBuffer.swap)
     S[S_CPAR] = 1 - S[S_CPAR]
-    S[S_NPREV] = S[S_NC]
     S[S_NC] = nc
     c.nc = nc
     T[3] = cycles()
     _scale_impulses(C, nc, D[D_CADOPT])
-    _joints_ready(P.JF, P.JI, P.BF, P.BI, S[S_NJ], P.kinds, D[D_JADOPT])
+    _scale_joint_impulses(P.JF, P.JI, S[S_NJ], D[D_JADOPT])
     S[S_BROKEN] = soft_step(P.ctx, P.par, B, C, Sp, P.R, P.SB, optional_joints(P.JF, P.JI), P.JW, P.JS,
                               P.V0)
     T[4] = cycles()
