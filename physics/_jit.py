@@ -61,13 +61,21 @@ if os.environ.get("STELKROPP_FAST_INLINE", "1") != "0":
     _numba_inline.apply()
 
 
-def kernel(fn=None, **kw):
+def kernel(fn=None, *, runtime: bool = False, **kw):
     """``@kernel``: numba ``njit(cache=True, fastmath=False)`` for the core's hot loops.
 
     fastmath stays off: determinism and IEEE NaN semantics matter more here
     (the finite check relies on NaN propagating).
+
+    ``runtime``: compile with numba's runtime (NRT).  Only a kernel that allocates an array, or
+    returns one, needs it; without it no array a kernel binds or passes on is reference-counted
+    (with it, each of a table's 20-26 column arrays costs two atomic updates per call) and the
+    kernel compiles to less code.  It is set on every kernel, never inherited: numba otherwise
+    compiles a callee with its first caller's setting, so the code would depend on which caller
+    compiled first.  ``python -m physics precompile`` refuses a runtime-free kernel that returns an
+    array (compile_checks.py): its caller would release a reference it was never given.
     """
-    opts = dict(cache=True, nogil=True)
+    opts = dict(cache=True, nogil=True, _nrt=runtime)
     opts.update(kw)
     if fn is None:
         return lambda f: _njit(**opts)(f)
@@ -107,10 +115,10 @@ class _NoAliasDispatcher(_CPUDispatcher):
     targetdescr = _NoAliasTarget("cpu")
 
 
-def kernel_noalias(fn=None, **kw):
+def kernel_noalias(fn=None, *, runtime: bool = False, **kw):
     """``@kernel_noalias``: as ``@kernel``, and every array argument is promised to share no
     memory with any other (the caller's duty: pass distinct arrays only)."""
-    opts = dict(nogil=True, nopython=True)
+    opts = dict(nogil=True, nopython=True, _nrt=runtime)
     opts.update(kw)
     cache = opts.pop("cache", True)  # a decorator option (njit's), not a target option
 

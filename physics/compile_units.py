@@ -241,8 +241,10 @@ def mark(unit: str) -> None:
 
 
 def _worker(unit: str):
+    from .compile_checks import returns_checked
     t0, c0 = time.time(), time.process_time()
-    run_unit(unit)
+    with returns_checked():
+        run_unit(unit)
     mark(unit)
     return unit, time.time() - t0, time.process_time() - c0
 

@@ -29,3 +29,13 @@ def pytest_configure(config):
     src = config.getoption("--box2d-src")
     if src:  # the bench's builder reads the variable (bench/box2d/build.py find_source)
         _os.environ["STELKROPP_BOX2D_SRC"] = str(Path(src).expanduser().resolve())
+
+
+# Every kernel the tests compile is checked where numba's runtime stops (physics/compile_checks.py):
+# a runtime-free kernel that returns arrays, or takes them from one with the runtime, fails the
+# test that compiled it instead of corrupting the heap later.
+from numba.core import event as _numba_event  # noqa: E402
+
+from physics.compile_checks import ReturnCheck as _ReturnCheck  # noqa: E402
+
+_numba_event.register("numba:compile", _ReturnCheck())

@@ -38,7 +38,7 @@ from .contact_soft import BLOCK, BOUNCED, INV_DET, JN, K11, K12, K22, KE0, MASS_
 from .restitution_cluster import cap_clusters, save_velocities
 
 
-@kernel
+@kernel(runtime=True)
 def restitution_contacts(c, p, SB, C, R, V0):
     """Bounce the points that first pushed since the last call (see the module doc), then cap
     each cluster of bodies bouncing together at its energy at the sub-step start ``V0``

@@ -52,7 +52,7 @@ def _dynamic(SB, i):
     return SB[i, IM] > 0.0 or SB[i, II] > 0.0
 
 
-@kernel
+@kernel(runtime=True)
 def clusters(SB, C, nc, n, due):
     """(parent array, member flags) of the dynamic bodies joined by the manifolds with ``due[k]``."""
     parent = np.arange(n)
@@ -73,7 +73,7 @@ def clusters(SB, C, nc, n, due):
     return parent, member
 
 
-@kernel
+@kernel(runtime=True)
 def _scales(SB, C, nc, n, due, V0, VR, parent, member):
     """Per cluster root: the bounce scale s (1: within its cap)."""
     cap = np.zeros(n)
@@ -113,7 +113,7 @@ def _scales(SB, C, nc, n, due, V0, VR, parent, member):
     return s
 
 
-@kernel
+@kernel(runtime=True)
 def cap_clusters(SB, C, nc, n, R, due, V0, VR, J0):
     """Scale the bounces of every cluster whose energy they raised past its sub-step start.
 

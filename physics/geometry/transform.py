@@ -52,9 +52,7 @@ def _fixture_box(F, V, f, px, py, c, s, margin):
     return lo_x - margin, lo_y - margin, hi_x + margin, hi_y + margin
 
 
-# _nrt=False: allocates nothing; without the runtime the column reads per fixture cost no
-# reference counting (physics/step/frame.py)
-@kernel(_nrt=False)
+@kernel
 def update_geometry(B, F, V, n, nf, dt, spec):
     """Transform every fixture to world space and refresh the fixtures' and bodies' AABBs.
 

@@ -88,7 +88,7 @@ def _vertex_edges(P, Q, out, swap):
                     out[1], out[2], out[3], out[4] = P[i, 0], P[i, 1], cx, cy
 
 
-@kernel
+@kernel(runtime=True)
 def core_distance(P, Q):
     """(distance, pa_x, pa_y, pb_x, pb_y) between the cores P and Q ((k, 2) arrays: 1 = point,
     2 = segment, >= 3 = CCW polygon); 0 when they meet (the witness is then a shared point)."""

@@ -9,7 +9,7 @@ from .filter import accepts
 from .tree import COUNT, LEFT, RIGHT, START, boxes_meet
 
 
-@kernel
+@kernel(runtime=True)
 def box_candidates(F, box, nb, info, order, x0, y0, x1, y1, category, mask, out):
     """Slots (into ``out``) of fixtures passing the filter whose exact box meets (x0, y0)-(x1, y1)."""
     if order.shape[0] == 0:

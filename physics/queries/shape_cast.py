@@ -23,7 +23,7 @@ TOLERANCE = 1e-9
 MAX_ITERATIONS = 64
 
 
-@kernel
+@kernel(runtime=True)
 def cast_against(P, rp, tx, ty, Q, rq):
     """(fraction, point x, y, normal x, y) of core P (radius rp) moved by t (tx, ty) against Q
     (radius rq); fraction -1 for no contact within t in [0, 1].  The point is on Q's surface and

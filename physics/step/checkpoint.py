@@ -14,12 +14,10 @@ import numpy as np
 from .._jit import kernel
 from ..store import DYNAMIC
 
-# the kernels here allocate nothing: compiled without numba's runtime (_nrt=False), so reading
-# the body columns costs no reference counting (physics/step/frame.py)
 STATE, ENERGY = 0, 1  # why a step is refused: a non-finite state, or a finite state whose energy is not
 
 
-@kernel(_nrt=False)
+@kernel
 def save_state(B, n, X, Q, Vel, W):
     for i in range(n):
         X[i, 0] = B.x[i, 0]
@@ -30,7 +28,7 @@ def save_state(B, n, X, Q, Vel, W):
         W[i] = B.w[i]
 
 
-@kernel(_nrt=False)
+@kernel
 def restore_state(B, n, X, Q, Vel, W):
     for i in range(n):
         B.x[i, 0] = X[i, 0]
@@ -41,14 +39,14 @@ def restore_state(B, n, X, Q, Vel, W):
         B.w[i] = W[i]
 
 
-@kernel(_nrt=False)
+@kernel
 def finite_state(B, i):
     """Each component of body i's state is finite."""
     return (math.isfinite(B.x[i, 0]) and math.isfinite(B.x[i, 1]) and math.isfinite(B.q[i])
             and math.isfinite(B.v[i, 0]) and math.isfinite(B.v[i, 1]) and math.isfinite(B.w[i]))
 
 
-@kernel(_nrt=False)
+@kernel
 def spring_energy(B, S, s):
     """Elastic energy 1/2 k (|d| - l0)^2 of spring s (J); inf when it overflows."""
     a = S.a[s]
@@ -69,7 +67,7 @@ def spring_energy(B, S, s):
     return 0.5 * S.k[s] * stretch * stretch
 
 
-@kernel(_nrt=False)
+@kernel
 def count_nonfinite(B, n, S, ns, out, why):
     """Writes the slots whose state is NaN or infinite into ``out``; returns how many.
 

@@ -19,7 +19,7 @@ from .._jit import kernel
 from .resting import kept
 
 
-@kernel(_nrt=False)
+@kernel
 def touch_update(key, count, depth, jn, n, slop, prev, nprev, out, begin, absent):
     """Merge rows ``[:n]`` with the sorted touching keys ``prev[:nprev]``: the touching keys into
     ``out``, the rows that begin into ``begin``, the keys that stopped into ``absent``; returns

@@ -22,7 +22,7 @@ KE, PE, ELASTIC, MASS, EXTERNAL, PUSH, LOWEST = range(7)
 SUMS = 7
 
 
-@kernel(_nrt=False)
+@kernel
 def guard_sums(B, S, n, ns, gx, gy, out):
     """Fill ``out[KE..EXTERNAL]`` from the first ``n`` bodies and ``ns`` springs."""
     ke = 0.0
@@ -58,7 +58,7 @@ def guard_sums(B, S, n, ns, gx, gy, out):
     out[LOWEST] = lowest
 
 
-@kernel(_nrt=False)
+@kernel
 def push_sum(B, n, Ca, Cb, nc, count, speed):
     """1/2 sum_i m_i (c_i speed)^2 over the dynamic bodies, c_i body i's contact manifolds
     (``count``: int scratch of at least n)."""
@@ -75,7 +75,7 @@ def push_sum(B, n, Ca, Cb, nc, count, speed):
     return total
 
 
-@kernel
+@kernel(runtime=True)
 def motor_power(JF, JI, BF, BI, nj):
     """(P, dragged): P bounds the power (W) the ``nj`` joints' motors can put in at the bodies'
     current velocities, and ``dragged`` says a mouse joint pulls (the user's input, unbounded).

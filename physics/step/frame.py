@@ -15,10 +15,7 @@ from .energy_guard import PUSH_SPEED
 from .energy_sums import PUSH, guard_sums, push_sum
 
 
-# _nrt=False (both kernels, and the helpers they call): they allocate nothing, and without
-# numba's runtime the per-fixture and per-body reads of the table columns cost no atomic
-# reference-count updates (pyramid20: begin_step 280 us -> 90 us on the loaded 2-core VM)
-@kernel(_nrt=False)
+@kernel
 def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums):
     """Save the last finite state, then refresh the ``nf`` fixtures' world geometry and AABBs;
     the energy guard's sums of the state the step starts from into ``sums`` (energy_sums.py)."""
@@ -28,7 +25,7 @@ def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums):
     update_geometry(B, F, V, c.n, nf, c.dt, c.spec)
 
 
-@kernel(_nrt=False)
+@kernel
 def end_step(ctx, B, S, bad, why, Ca, Cb, nc, count, sums, key, npts, depth, jn, prev, nprev, out, begin,
              absent):
     """Count bodies whose state or energy is not finite (slots into ``bad``, the reason in
@@ -52,14 +49,14 @@ def end_step(ctx, B, S, bad, why, Ca, Cb, nc, count, sums, key, npts, depth, jn,
     return k, nt, nb, na
 
 
-@kernel
+@kernel(runtime=True)
 def begin_step_flat(ctx, BF, BI, FF, FI, ghost, wghost, VF, VI, nf, X, Q, Vel, W, SF, SI, sums):
     """``begin_step`` over the tables' flat arrays."""
     begin_step(ctx, bodies_view(BF, BI), fixtures_view(FF, FI, ghost, wghost), verts_view(VF, VI), nf,
                X, Q, Vel, W, springs_view(SF, SI), sums)
 
 
-@kernel
+@kernel(runtime=True)
 def end_step_flat(ctx, BF, BI, SF, SI, bad, why, Ca, Cb, nc, count, sums, key, npts, depth, jn, prev, nprev,
                   out, begin, absent):
     """``end_step`` over the body and spring tables' flat arrays."""

@@ -61,7 +61,7 @@ def _joints_ready(JF, JI, BF, BI, nj, kinds):
     return not kinds_changed(JF, JI, BF, BI, nj, kinds)
 
 
-@kernel
+@kernel(runtime=True)
 def _scale_joint_impulses(JF, JI, nj, r):
     """JointTable.adopt: the joints' impulses times ``r``."""
     if JF is None or r == 1.0:
@@ -72,7 +72,7 @@ def _scale_joint_impulses(JF, JI, nj, r):
             J.impulse[j, k] *= r
 
 
-@kernel
+@kernel(runtime=True)
 def _links(JF, JI, nj, out):
     """The joints' island links (islands.joint_links_flat); no rows without joints."""
     if JF is None:
@@ -90,7 +90,7 @@ def _scale_impulses(C, nc, r):
                 C.jt[k, p] *= r
 
 
-@kernel
+@kernel(runtime=True)
 def soft_world_step(P):
     """One step of the world in ``P`` (see the module doc); returns a code."""
     S, T, D, G = P.S, P.T, P.D, P.G
@@ -150,7 +150,7 @@ def soft_world_step(P):
     return _finish(P, B, Sp, C, nc)
 
 
-@kernel
+@kernel(runtime=True)
 def _finish(P, B, Sp, C, nc):
     """The finite check, the energy guard and the touching merge (frame.end_step)."""
     S, T, D, G = P.S, P.T, P.D, P.G

@@ -10,7 +10,8 @@ the flat arrays and call these inside compiled code, where building a tuple of s
 and the kernels behind them keep their namedtuple signatures: the views built here have exactly
 the numba types of the views store/table.py builds in Python, so each kernel compiles once.
 The functions are written out, not built with exec, because numba caches only functions it can
-find in a source file.
+find in a source file.  A view returns arrays, so it is compiled with numba's runtime, and so are
+its callers (physics/_jit.py, compile_checks.py): the step's entry points, once per call.
 """
 from __future__ import annotations
 
@@ -66,7 +67,7 @@ def function(table: str) -> str:
     exprs, extra = column_exprs(fields)
     args = ", ".join(["F", "I"] + extra)
     body = ",\n        ".join(exprs)
-    return (f"@kernel\ndef {table}_view({args}):\n"
+    return (f"@kernel(runtime=True)\ndef {table}_view({args}):\n"
             f"    \"\"\"The {tname} view of the flat arrays ({args}).\"\"\"\n"
             f"    return {tname}(\n        {body})\n")
 

@@ -20,7 +20,7 @@ def optional_joints(JF, JI):
     return None if JF is None else joints_view(JF, JI)
 
 
-@overload(optional_joints)
+@overload(optional_joints, inline="always")  # returns arrays: built the caller's way
 def _optional_joints(JF, JI):
     if isinstance(JF, types.NoneType):
         return lambda JF, JI: None

@@ -28,7 +28,7 @@ def brute_pairs(B, n, pairs):
     return k
 
 
-@kernel
+@kernel(runtime=True)
 def brute_pairs_flat(FF, FI, ghost, wghost, n, pairs):
     """``brute_pairs`` over the fixture table's flat arrays (store/flat.py)."""
     return brute_pairs(fixtures_view(FF, FI, ghost, wghost), n, pairs)

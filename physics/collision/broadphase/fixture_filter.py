@@ -43,7 +43,7 @@ def _joined(keys, a, b):
     return lo < m and keys[lo] == key
 
 
-@kernel(_nrt=False, inline="always")
+@kernel(inline="always")
 def may_collide(F, keys, i, j):
     """Fixtures i and j are on different bodies, their filters let them meet and no joint
     between their bodies turns collision off."""
@@ -52,10 +52,7 @@ def may_collide(F, keys, i, j):
     return a != b and should_collide(F, i, j) and not _joined(keys, a, b)
 
 
-# _nrt=False: the loop allocates nothing, and with numba's runtime every read of a table column
-# (F.body, F.group, ...) is an atomic reference-count pair: ~1 us a pair instead of ~10 ns
-# (pyramid20, 400 pairs: 385 us a call against 3 us; the step without fixtures had no such pass)
-@kernel(_nrt=False)
+@kernel
 def filter_pairs(F, pairs, npairs, keys):
     """Compact the fixture pairs ``pairs[:npairs]`` to those that may collide; returns the count."""
     k = 0
@@ -70,7 +67,7 @@ def filter_pairs(F, pairs, npairs, keys):
     return k
 
 
-@kernel
+@kernel(runtime=True)
 def filter_pairs_flat(FF, FI, ghost, wghost, pairs, npairs, keys):
     """``filter_pairs`` over the fixture table's flat arrays (store/flat.py)."""
     return filter_pairs(fixtures_view(FF, FI, ghost, wghost), pairs, npairs, keys)

@@ -59,7 +59,7 @@ def _less(key, a, b):
     return key[a] < key[b] or (key[a] == key[b] and a < b)
 
 
-@kernel
+@kernel(runtime=True)
 def _repair_order(order, key, n, fresh):
     """Sort slots by key; insertion sort from last call's order when it is
     nearly sorted, a full stable sort when not (or when ``fresh``)."""

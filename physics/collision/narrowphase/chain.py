@@ -35,7 +35,7 @@ def _unit(x, y):
     return x / d, y / d
 
 
-@kernel(_nrt=False)
+@kernel
 def chain_circle(v, g, cx, cy, r, margin, out_p, out_s, out_f):
     """Chain segment v (2, 2) with ghosts g (2, 2) against a circle; returns (count, nx, ny)."""
     p1x, p1y, p2x, p2y = v[0, 0], v[0, 1], v[1, 0], v[1, 1]
@@ -84,7 +84,7 @@ def _classify(nx, ny, e1x, e1y, n0x, n0y, convex1, n2x, n2y, convex2):
     return 2
 
 
-@kernel(_nrt=False)
+@kernel
 def chain_polygon(v, nv, g, vb, nb, rb, margin, bias, out_p, out_s, out_f):
     """Chain segment v (2-vertex core, normals nv) with ghosts g against a rounded core vb."""
     e1x, e1y = _unit(v[1, 0] - v[0, 0], v[1, 1] - v[0, 1])

@@ -39,7 +39,7 @@ def circle_circle(ax, ay, ra, bx, by, rb, margin, out_p, out_s, out_f):
     return 1, nx, ny
 
 
-@kernel(_nrt=False)
+@kernel
 def polygon_circle(v, vn, cx, cy, r, margin, out_p, out_s, out_f):
     """Polygon A against circle B; returns (count, nx, ny), n from A to B.
 

@@ -48,7 +48,7 @@ def _far_from_line(va, vb, ax, ay, bx, by, tol):
     return best_x, best_y
 
 
-@kernel(_nrt=False)
+@kernel
 def start_polytope(va, vb, sw, count, poly, tol):
     """Grow GJK's simplex (origin inside or on it) into a CCW triangle in ``poly``.
 
@@ -96,7 +96,7 @@ def _nearest_edge(poly, n):
     return best, bd, bnx, bny
 
 
-@kernel(_nrt=False)
+@kernel
 def expand(va, vb, poly, n, tol):
     """Run EPA from the CCW polytope poly[:n]; returns (depth, nx, ny)."""
     cap = poly.shape[0]
@@ -116,7 +116,7 @@ def expand(va, vb, poly, n, tol):
         n += 1
 
 
-@kernel(_nrt=False)
+@kernel
 def penetration(va, vb, sw, si, lam, poly):
     """GJK, then EPA when overlapping; returns (separation, nx, ny).
 
@@ -134,7 +134,7 @@ def penetration(va, vb, sw, si, lam, poly):
     return -depth, -nx, -ny
 
 
-@kernel
+@kernel(runtime=True)
 def epa(va, vb):
     """Test entry: (depth, nx, ny); depth < 0 is the distance of apart shapes."""
     sw = np.empty((3, 2))

@@ -33,9 +33,7 @@ def _add_support(va, vb, sw, si, k, dx, dy):
     si[k, 1] = ib
 
 
-# _nrt=False (also in epa.py): called once per pair from the narrow-phase loop;
-# allocation-free, so it can skip the runtime's per-array reference counting
-@kernel(_nrt=False)
+@kernel
 def gjk(va, vb, sw, si, lam):
     """Distance from A to B; returns (count, distance, vx, vy).
 
@@ -82,7 +80,7 @@ def closest_points(va, vb, si, lam, count):
     return pax, pay, pbx, pby
 
 
-@kernel
+@kernel(runtime=True)
 def gjk_distance(va, vb):
     """Test entry: (distance, nx, ny, pax, pay, pbx, pby) for two polygons.
 

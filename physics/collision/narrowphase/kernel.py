@@ -29,7 +29,7 @@ from .carry import carry_over, seek
 BIAS = 1e-3          # reference-face hysteresis, relative to the smaller body
 
 
-@kernel(inline="always")
+@kernel(runtime=True, inline="always")
 def pair_keys(F, pairs, npairs):
     """Keys of the fixture pairs oriented by id (lower id first)."""
     keys = np.empty(npairs, np.int64)
@@ -197,7 +197,7 @@ def _write_row(C, row, B, F, fa, fb, a, b, key, count, nx, ny, out_p, out_s, out
     C.mu_d[row] = math.sqrt(F.mu_d[fa] * F.mu_d[fb])
 
 
-@kernel
+@kernel(runtime=True)
 def manifold_scratch():
     """The scratch arrays one ``_manifold`` call works in (support cores, simplex, clip polygon,
     output points), allocated once per kernel call and reused for every pair."""
@@ -206,7 +206,7 @@ def manifold_scratch():
             np.zeros((2, 2)), np.zeros(2), np.zeros(2, np.int32))
 
 
-@kernel
+@kernel(runtime=True)
 def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev, full=None):
     """Fill C (rows sorted by key, point state carried over from P); returns the row count, or
     -1 when ``full`` is None (the lean kernel: ``_manifold``) and a pair needs the whole kernel.
@@ -222,7 +222,7 @@ def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev, full=None):
     return collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, manifold_scratch())
 
 
-@kernel
+@kernel(runtime=True)
 def sort_pairs(fid, pairs, npairs, keys, order):
     """The pairs' keys (``pair_keys``; ``fid``: the fixtures' ids) into ``keys`` and their
     ascending order into ``order``, both at least ``npairs`` long, without allocating for a small
@@ -240,9 +240,7 @@ def sort_pairs(fid, pairs, npairs, keys, order):
         order[j] = k
 
 
-# _nrt=False: it allocates nothing, and with numba's runtime every array of the five tables it
-# takes by value would be reference-counted on entry and exit (about 200 atomic updates a call)
-@kernel(_nrt=False)
+@kernel
 def collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, scratch):
     """``collide_kernel`` with the pairs' ``keys`` and ``order[:npairs]`` given and the manifold
     ``scratch`` (manifold_scratch's arrays) reused: the step driver keeps them between steps."""
@@ -252,10 +250,7 @@ def collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, s
                  sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f)
 
 
-# _nrt=False: this loop allocates nothing, and without numba's runtime the
-# dozens of array views that the inlined helpers bind per pair cost no atomic
-# reference-count updates (with them a box pair took ~800 ns instead of ~100).
-@kernel(_nrt=False)
+@kernel
 def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, full, dt, spec,
           sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
     row = 0
@@ -281,7 +276,7 @@ def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, full, dt, spec,
     return row
 
 
-@kernel
+@kernel(runtime=True)
 def collide_flat(ctx, BF, BI, FF, FI, ghost, wghost, VF, VI, pairs, npairs, CF, CI, Cpt, PF, PI, Ppt, n_prev,
                  full=None):
     """``collide_kernel`` over the tables' flat arrays (store/flat.py)."""

@@ -119,7 +119,7 @@ def core_distance(va, vb):
     return math.sqrt(d2b), px, py, vb[ib, 0], vb[ib, 1], ja, ib
 
 
-@kernel(_nrt=False)
+@kernel
 def round_pair(va, na, ra, vb, nb, rb, margin, bias, out_p, out_s, out_f):
     """Manifold of two rounded cores (module docstring); returns (count, nx, ny), n from A to B."""
     rsum = ra + rb

@@ -27,7 +27,7 @@ def _keep(sw, si, lam, dst, src, weight):
     lam[dst] = weight
 
 
-@kernel(_nrt=False)
+@kernel
 def _segment(sw, si, lam, i, j):
     """Closest point on segment w_i w_j; compacts the simplex to slots 0..c-1."""
     ax, ay = sw[i, 0], sw[i, 1]
@@ -47,7 +47,7 @@ def _segment(sw, si, lam, i, j):
     return 2
 
 
-@kernel(_nrt=False)
+@kernel
 def _triangle(sw, si, lam):
     """Closest point on triangle w0 w1 w2 (Ericson 5.1.5 region order)."""
     ax, ay = sw[0, 0], sw[0, 1]
@@ -85,7 +85,7 @@ def _triangle(sw, si, lam):
     return 3
 
 
-@kernel(_nrt=False)
+@kernel
 def reduce_simplex(sw, si, lam, count):
     """Reduce the simplex to its closest feature; returns (count, vx, vy).
 

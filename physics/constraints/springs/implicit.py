@@ -84,7 +84,7 @@ def _product(B, nr, rows, bod, gam, p, out, DV, DW):
         out[r] = row_speed(DV, DW, rows, bod, r) + gam[r] * p[r]
 
 
-@kernel
+@kernel(runtime=True)
 def solve_system(B, nr, rows, bod, gam, lam):
     """Jacobi-preconditioned CG for lam over the first nr rows; returns the iterations used."""
     cap = B.inv_m.shape[0]

@@ -139,7 +139,7 @@ def _push(B, rows, bod, k, j):
         B.w[b] += B.inv_i[b] * j * rows[k, JBW]
 
 
-@kernel
+@kernel(runtime=True)
 def solve_springs(B, S, ns, h):
     """One sub-step h of every spring: explicit impulses for the soft ones, then one implicit
     system for the stiff axes and the stiff geometric modes (see the module doc)."""
