@@ -50,8 +50,9 @@ class Joint:
     :class:`~physics.WeldJoint`, :class:`~physics.DistanceJoint`, :class:`~physics.WheelJoint`,
     :class:`~physics.MotorJoint`, :class:`~physics.MouseJoint`).
 
-    Every handle is an instance of its kind's class, a subclass of this one: the members here
-    are those every kind has; the kind's class adds its parameters and readouts.
+    Every handle is an instance of its kind's class, a subclass of this one (``Joint`` itself is
+    never called): the members here are those every kind has; the kind's class adds its
+    parameters and readouts.
     """
 
     __slots__ = ("_world", "_id", "_kind", "_a", "_b")
