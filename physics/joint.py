@@ -1,31 +1,27 @@
 """Joint handles: every parameter of a joint readable and assignable live, and its readouts.
 
 A handle stores the world, a stable id, the kind and the two bodies; values live
-in the joint table (physics/store/joints.py).  Parameters are those of
-physics/joint_params.py for the joint's kind (asking a hinge for ``max_motor_force``
-is an AttributeError); setters validate (ValueError naming the field) and wake the
-joined bodies.  Readouts describe the last step: ``angle``, ``translation``,
-``length`` and ``speed`` now; ``motor_torque``/``motor_force``, ``reaction_force``
-(on body_a, N) and ``reaction_torque`` (on body_a about its anchor, N m) averaged
-over the last solver pass.
+in the joint table (physics/store/joints.py).  ``Joint`` holds what every kind has
+(identity, anchors, collide_connected, break thresholds, reactions); each kind's class
+(physics/joint_kinds.py: ``RevoluteJoint``, ...) adds that kind's parameters from
+physics/joint_params.py and its readouts from physics/joint_readouts.py, so asking a hinge
+for ``max_motor_force`` is an AttributeError saying which parameters it has.  Setters
+validate (ValueError naming the field) and wake the joined bodies.  ``reaction_force``
+(on body_a, N) and ``reaction_torque`` (on body_a about its anchor, N m) are averaged over
+the last solver pass.
 """
 from __future__ import annotations
-
-import math
 
 import numpy as np
 
 from . import joint_params as jp
-from .store.joints import BROKEN, COLLIDE, DISTANCE, MOTOR_ROW
-from .validate import finite_num, finite_vec
-
-
-def _rot(q, v):
-    c, s = math.cos(q), math.sin(q)
-    return np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
+from . import joint_readouts
+from .store.joints import BROKEN, COLLIDE, DISTANCE
+from .validate import finite_vec
 
 
 def _param_property(name: str, doc: str):
+    """The live, validated property of parameter ``name`` (its Param in joint_params.PARAMS)."""
     def get(self):
         p = self._spec(name)
         arr = getattr(self._J, p.field)
@@ -49,7 +45,15 @@ def _param_property(name: str, doc: str):
 
 
 class Joint:
-    """Handle of one joint in a :class:`~physics.World` (``World.add_joint``)."""
+    """Handle of one joint in a :class:`~physics.World`, made by ``World.add_joint`` or by calling
+    a kind's class (:class:`~physics.RevoluteJoint`, :class:`~physics.PrismaticJoint`,
+    :class:`~physics.WeldJoint`, :class:`~physics.DistanceJoint`, :class:`~physics.WheelJoint`,
+    :class:`~physics.MotorJoint`, :class:`~physics.MouseJoint`).
+
+    Every handle is an instance of its kind's class, a subclass of this one (``Joint`` itself is
+    never called): the members here are those every kind has; the kind's class adds its
+    parameters and readouts.
+    """
 
     __slots__ = ("_world", "_id", "_kind", "_a", "_b")
 
@@ -114,9 +118,26 @@ class Joint:
                                  f"{', '.join(jp.PARAMS[self._kind])}")
         return spec
 
-    def _need(self, what, kinds):
-        if self._kind not in kinds:
-            raise AttributeError(f"a {self._kind} joint has no {what}")
+    def _no(self, name: str) -> str:
+        """Why this kind has no attribute ``name``: the error says what it has instead."""
+        if any(name in params for params in jp.PARAMS.values()):
+            return (f"a {self._kind} joint has no parameter {name!r}; it has "
+                    f"{', '.join(jp.PARAMS[self._kind])}")
+        if name in joint_readouts.KINDS:
+            return f"a {self._kind} joint has no {name} (only {', '.join(joint_readouts.KINDS[name])} joints do)"
+        return f"{type(self).__name__!r} object has no attribute {name!r}"
+
+    def __getattr__(self, name):
+        # reached only when the class lacks ``name``: another kind's parameter or a typo
+        if name.startswith("_"):
+            raise AttributeError(name)
+        raise AttributeError(self._no(name))
+
+    def __setattr__(self, name, value):
+        # __slots__ would refuse it too, but without saying which parameters the kind has
+        if not name.startswith("_") and not hasattr(type(self), name):
+            raise AttributeError(self._no(name))
+        object.__setattr__(self, name, value)
 
     def _edited(self, structural=False):
         self._world._joint_edited(self, structural)
@@ -219,116 +240,6 @@ class Joint:
             self._world._set_joint_anchor(self, "b", v)
 
     @property
-    def reference_angle(self) -> float:
-        """Angle of a relative to b at which the joint's angle reads 0 (rad)."""
-        self._need("reference angle", ("revolute", "prismatic", "weld", "wheel"))
-        return float(self._J.ref[self._s])
-
-    @reference_angle.setter
-    def reference_angle(self, value):
-        self._need("reference angle", ("revolute", "prismatic", "weld", "wheel"))
-        self._J.ref[self._s] = finite_num(value, "reference_angle")
-        self._edited()
-
-    @property
-    def local_axis(self) -> tuple[float, float]:
-        """Unit axis in body_a's frame (prismatic, wheel)."""
-        self._need("axis", ("prismatic", "wheel"))
-        v = self._J.axis[self._s]
-        return (float(v[0]), float(v[1]))
-
-    @local_axis.setter
-    def local_axis(self, value):
-        self._need("axis", ("prismatic", "wheel"))
-        self._world._set_joint_axis(self, finite_vec(value, "local_axis"), local=True)
-
-    @property
-    def axis(self) -> tuple[float, float]:
-        """Unit axis in world coordinates now (prismatic, wheel); assigning sets it in a's frame."""
-        v = _rot(self._a.angle, self.local_axis)
-        return (float(v[0]), float(v[1]))
-
-    @axis.setter
-    def axis(self, value):
-        self._need("axis", ("prismatic", "wheel"))
-        self._world._set_joint_axis(self, finite_vec(value, "axis"), local=False)
-
-    # -- readouts ----------------------------------------------------------------
-    @property
-    def angle(self) -> float:
-        """Angle of body_a relative to body_b minus the reference angle (rad)."""
-        self._need("angle", ("revolute", "weld", "wheel", "prismatic", "motor"))
-        qb = self._b.angle if self._b is not None else 0.0
-        return self._a.angle - qb - float(self._J.ref[self._s])
-
-    def _separation(self):
-        pa = np.array(self.anchor_a)
-        pb = np.array(self.anchor_b)
-        return pa, pb, pa - pb
-
-    def _rel_velocity(self, pa, pb):
-        va = np.array(self._a.velocity_at(pa))
-        vb = np.zeros(2) if self._b is None else np.array(self._b.velocity_at(pb))
-        return va - vb
-
-    @property
-    def translation(self) -> float:
-        """Position of a's anchor relative to b's along the axis (m; prismatic, wheel)."""
-        self._need("translation", ("prismatic", "wheel"))
-        return float(self._separation()[2] @ np.array(self.axis))
-
-    @property
-    def length(self) -> float:
-        """Distance between the anchors now (m; distance joint).  Assigning sets the rest length."""
-        self._need("length", ("distance",))
-        return float(np.hypot(*self._separation()[2]))
-
-    @length.setter
-    def length(self, value):
-        self._need("length", ("distance",))
-        self._J.length[self._s] = finite_num(value, "length", lo=0.0)
-        self._edited(structural=True)
-
-    @property
-    def rest_length(self) -> float:
-        """The distance joint's rest length (m), the ``length`` it was given."""
-        self._need("rest length", ("distance",))
-        return float(self._J.length[self._s])
-
-    @property
-    def speed(self) -> float:
-        """Rate of the joint's coordinate: rad/s for revolute and wheel (the motor's speed), m/s along
-        the axis for prismatic, m/s of the length for distance."""
-        self._need("speed", ("revolute", "wheel", "prismatic", "distance"))
-        if self._kind in ("revolute", "wheel"):
-            wb = self._b.angular_velocity if self._b is not None else 0.0
-            return self._a.angular_velocity - wb
-        pa, pb, d = self._separation()
-        dv = self._rel_velocity(pa, pb)
-        if self._kind == "distance":
-            n = np.hypot(*d)
-            return float(dv @ d / n) if n > 0 else 0.0
-        u = np.array(self.axis)
-        w = self._a.angular_velocity
-        return float(dv @ u + d @ (w * np.array([-u[1], u[0]])))
-
-    def _motor(self):
-        span = self._world._joints.span
-        return float(self._J.impulse[self._s, MOTOR_ROW] / span) if span > 0 else 0.0
-
-    @property
-    def motor_torque(self) -> float:
-        """Torque (N m) the motor applied in the last step (revolute, wheel)."""
-        self._need("motor torque", ("revolute", "wheel"))
-        return self._motor()
-
-    @property
-    def motor_force(self) -> float:
-        """Force (N) the motor applied in the last step (prismatic)."""
-        self._need("motor force", ("prismatic",))
-        return self._motor()
-
-    @property
     def reaction_force(self) -> tuple[float, float]:
         """Force (N) the joint applied to body_a in the last step."""
         f = self._J.force[self._s]
@@ -345,8 +256,3 @@ class Joint:
         b = self._b.name if self._b is not None else "world"
         return f"<Joint {self.name or self._id} {self._kind}: {self._a.name} - {b}>"
 
-
-for _name in sorted({n for params in jp.PARAMS.values() for n in params} - {"length"}):
-    _doc = next(p.doc for params in jp.PARAMS.values() for n, p in params.items() if n == _name)
-    setattr(Joint, _name, _param_property(_name, _doc))
-del _name, _doc

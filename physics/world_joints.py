@@ -16,6 +16,7 @@ import numpy as np
 from . import joint_params as jp
 from .body import Body
 from .joint import Joint
+from .joint_kinds import CLASS_OF
 from .store.joints import BROKEN, COLLIDE, JOINT_KINDS
 from .validate import finite_num, finite_vec
 
@@ -48,7 +49,15 @@ class JointsMixin:
         prismatic, weld, distance, wheel, motor, mouse).  Keywords: the kind's parameters
         (physics/joint_params.py), its geometry (anchor/axis in world coordinates, or
         local_anchor_a/local_anchor_b/local_axis/reference_angle), name, collide_connected,
-        break_force, break_torque.  ValueError names a bad field; TypeError an unknown keyword."""
+        break_force, break_torque.  ValueError names a bad field; TypeError an unknown keyword.
+
+        Returns the handle, an instance of the kind's class (``physics.RevoluteJoint``, ...,
+        subclasses of ``physics.Joint``); calling that class, ``physics.RevoluteJoint(body_a,
+        body_b, ...)``, is the same call on body_a's world."""
+        return self._add_joint(kind, body_a, body_b, parameters, "add_joint")
+
+    def _add_joint(self, kind, body_a, body_b, parameters: dict, caller: str) -> Joint:
+        """add_joint's work; ``caller`` (add_joint or a kind's class) opens the TypeError's message."""
         self._check_editable("add_joint")
         if not isinstance(kind, str) or kind not in JOINT_KINDS:
             raise ValueError(f"kind: must be one of {list(JOINT_KINDS)}, got {kind!r}")
@@ -56,7 +65,7 @@ class JointsMixin:
         allowed = set(jp.PARAMS[kind]) | set(jp.GEOMETRY[kind]) | set(jp.COMMON)
         unknown = sorted(set(parameters) - allowed)
         if unknown:
-            raise TypeError(f"add_joint: a {kind} joint takes no {', '.join(map(repr, unknown))}; it takes "
+            raise TypeError(f"{caller}: a {kind} joint takes no {', '.join(map(repr, unknown))}; it takes "
                             f"{', '.join(sorted(allowed))}")
         values = {}
         for name, p in jp.PARAMS[kind].items():
@@ -88,7 +97,7 @@ class JointsMixin:
         J.flags[s] = COLLIDE if collide else 0
         J.break_force[s] = np.nan if bf is None else bf
         J.break_torque[s] = np.nan if bt is None else bt
-        h = Joint(self, oid, kind, body_a, body_b)
+        h = CLASS_OF[kind]._handle(self, oid, body_a, body_b)
         self._joint_handles[oid] = h
         self._joint_names.add(oid, name)
         self._joint_edited(h, structural=True)

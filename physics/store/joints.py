@@ -12,7 +12,7 @@ holds each row's accumulated impulse (N s or N m s) over ``JointTable.span``
 seconds: three equality rows (EQ0..EQ2: the point, angle or perpendicular
 rows that hold the joint together; a motor or mouse joint's own rows), then a
 spring, a motor and the lower and upper limit rows.  What the parameter fields
-mean per kind (``physics/joint.py`` names them for users):
+mean per kind (``physics/joint_params.py`` names them for users):
 
 =========  =========================================================================
 revolute   lower/upper angle, motor_speed + max_motor (torque), hertz + zeta (spring)

@@ -5,7 +5,9 @@ A page asks for one with an HTML comment alone on its line, ``<!-- stelkropp:NAM
 * ``solver-settings``: every solver mode's description and declared settings (name,
   default, range, meaning), read from ``physics.solvers``;
 * ``cli ARGS``: the output of ``python -m physics ARGS`` (run in-process; ``--help`` too);
-* ``examples``: every script in ``examples/``: its docstring, how to run it and its source.
+* ``examples``: every script in ``examples/``: its docstring, how to run it and its source;
+* ``joint-params KIND``: a joint kind's parameters (name, default, meaning), its creation-only
+  geometry and its readouts, read from ``physics.joint_params`` and ``physics.joint_readouts``.
 
 An unknown NAME raises, so a typo fails the build instead of vanishing from the page.
 """
@@ -32,6 +34,8 @@ def expand(name: str, args: str, page: str) -> str:
         return cli_output(args)
     if name == "examples":
         return examples()
+    if name == "joint-params":
+        return joint_params(args)
     raise ValueError(f"{page}: unknown generated section 'stelkropp:{name}'")
 
 
@@ -120,4 +124,22 @@ def examples() -> str:
         out.append("    ```python")
         out.extend(("    " + line) if line else "" for line in src.splitlines())
         out.append("    ```\n")
+    return "\n".join(out)
+
+
+def joint_params(kind: str) -> str:
+    """Tables of joint ``kind``'s parameters (name, default, meaning) and readouts, and its
+    creation-only geometry."""
+    from physics import joint_params as jp
+    from physics.joint_readouts import KINDS as READOUTS
+    from physics.joint_readouts import Readouts
+    if kind not in jp.PARAMS:
+        raise ValueError(f"joint-params: unknown joint kind {kind!r}; one of {list(jp.PARAMS)}")
+    out = ["| parameter | default | meaning |", "|---|---|---|"]
+    out += [f"| `{name}` | `{p.default!r}` | {_cell(p.doc)} |" for name, p in jp.PARAMS[kind].items()]
+    readouts = [f"| `{name}` | {_cell(vars(Readouts)[name].__doc__)} |" for name, kinds in READOUTS.items()
+                if kind in kinds]
+    out += ["", "| readout | meaning |", "|---|---|", *readouts] if readouts else []
+    geometry = ", ".join(f"`{g}`" for g in jp.GEOMETRY[kind]) or "none"
+    out += ["", f"Geometry, given at creation only: {geometry}.", ""]
     return "\n".join(out)
