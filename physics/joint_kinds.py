@@ -30,9 +30,7 @@ CLASS_OF: dict = {}
 
 
 def _parameter_doc(kind: str) -> str:
-    """
-
-    __slots__ = ()The part of a kind's class docstring generated from the declaration."""
+    """The part of a kind's class docstring generated from the declaration."""
     params = jp.PARAMS[kind]
     width = max(len(n) for n in params) + 2
     rows = [f"    {n:<{width}}default {p.default!r}: {p.doc}" for n, p in params.items()]
