@@ -87,13 +87,34 @@ class ModeValues:
 
 
 class ModeSettings:
-    """Dict-like view of one solver mode's parameters, validated on assignment."""
+    """Dict-like view of one solver mode's parameters, validated on assignment; each setting is
+    also an attribute (``world.settings.iterations = 20``).  An unknown name raises, for items
+    and attributes alike (UnknownSetting naming it), instead of being set and then ignored."""
+
+    __slots__ = ("_store", "_solver", "_decl", "_values")
 
     def __init__(self, store: ModeValues, solver: str):
-        self._store = store
-        self._solver = solver
-        self._decl = store.decl
-        self._values = store.values
+        object.__setattr__(self, "_store", store)
+        object.__setattr__(self, "_solver", solver)
+        object.__setattr__(self, "_decl", store.decl)
+        object.__setattr__(self, "_values", store.values)
+
+    def __getattr__(self, name):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        try:
+            return self[name]
+        except UnknownSetting as err:
+            raise AttributeError(str(err)) from None
+
+    def __setattr__(self, name, value):
+        if name in self.__slots__:  # copy and pickle restore the view's own fields
+            object.__setattr__(self, name, value)
+        else:
+            self[name] = value
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(self._decl))
 
     def _check(self, key):
         if not isinstance(key, str) or key not in self._decl:
