@@ -174,6 +174,7 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
     @energy_guard.setter
     def energy_guard(self, value):
         self._energy_guard = finite_num(value, "energy_guard", lo=0.0)
+        self._pipeline.dirty = True
 
     @property
     def time(self) -> float:
@@ -299,6 +300,7 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
     def sleeping(self, on):
         on = flag(on, "sleeping")
         self._sleeping = on
+        self._pipeline.dirty = True
         if not on:
             self.wake_all()
 

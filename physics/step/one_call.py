@@ -42,6 +42,9 @@ class OneCall:
         self._sort = (np.zeros(0, np.int64), np.zeros(0, np.int64))  # the pairs' keys and order
         self._scratch = None  # the narrow phase's manifold scratch
         self._V0 = None  # soft_step's start-velocity scratch
+        self._dt = None  # the step length and the mode's settings version the slots were set for
+        self._version = None
+        self._h = 0.0  # the sub-step the impulses are carried at
 
     # -- whether and what --------------------------------------------------
     @staticmethod
@@ -92,6 +95,7 @@ class OneCall:
         S[S_N], S[S_NF], S[S_NS], S[S_NJ] = n, s.fixtures.n, s.springs.n, nj
         S[S_NC], S[S_NTOUCH], S[S_LIMIT] = c.n, tr.n, world.max_pairs
         S[S_CPAR] = S[S_EPAR] = 0  # the pack's first tables are the current ones
+        self._dt = None  # the settings are written again before the next call
         self._keys = (tr.keys, tr._keys2)
         self.P = new_pack(pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
                           *s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.verts.arrays.flat,
@@ -123,17 +127,14 @@ class OneCall:
             self.key = key
         if self.P is None:
             return False
+        if pl.dirty or dt != self._dt or par.version != self._version:
+            self._settings(world, pl, par, dt)
         s = world._store
-        pl.refresh_settings(world, dt)
-        world._mode.derive(pl.ctx, par, s)
-        h = par.get("h")
+        steps = world.steps
         S, D = self.S, self.D
-        S[S_STEP] = world.steps
-        S[S_SLEEP] = world.sleeping
-        D[D_CADOPT] = s.contacts.adopt_factor(h, world.steps)
-        D[D_JADOPT] = s.joints.adopt_factor(h, world.steps) if s.joints.n else 1.0
-        D[D_GROWTH] = world.energy_guard
-        D[D_GMAG] = math.hypot(world._gravity[0], world._gravity[1])
+        S[S_STEP] = steps
+        D[D_CADOPT] = s.contacts.adopt_factor(self._h, steps)
+        D[D_JADOPT] = s.joints.adopt_factor(self._h, steps) if s.joints.n else 1.0
         t0 = time.perf_counter()
         code = soft_world_step(self.P)
         while drv.OK < code < drv.NONFINITE:
@@ -144,6 +145,17 @@ class OneCall:
             self._refused(world, pl, code)
         self._accepted(world, pl, dt, elapsed)
         return True
+
+    def _settings(self, world, pl, par, dt: float) -> None:
+        """The world's settings into the step context and the pack's slots: on a change of the step
+        length, of the mode's settings or of a world setting (they mark the pipeline dirty)."""
+        pl.refresh_settings(world, dt)
+        world._mode.derive(pl.ctx, par, world._store)
+        self._h = par.get("h")
+        self._dt, self._version = dt, par.version
+        self.S[S_SLEEP] = world.sleeping
+        self.D[D_GROWTH] = world.energy_guard
+        self.D[D_GMAG] = math.hypot(world._gravity[0], world._gravity[1])
 
     def _grow(self, world, pl, code: int) -> None:
         """Make room for what the driver found short (or raise what is over the limit)."""
@@ -179,19 +191,20 @@ class OneCall:
         pl._gained(world, float(g.G[E_OUT]), float(g.G[LIMIT_OUT]))
 
     def _accepted(self, world, pl, dt: float, elapsed: float) -> None:
-        self._mirror(world)
-        S = self.S
-        s = world._store
-        if s.joints.n:
-            after_step(s, int(S[S_BROKEN]))
-        pl.n_awake = int(S[S_NAWAKE]) if world.sleeping else -1
-        pl.npairs = int(S[S_NPAIRS])
+        c = world._store.contacts
+        c.swap()  # _mirror's, with the slots read once
+        S = self.S.tolist()
+        c.n = S[S_NC]
+        if world._store.joints.n:
+            after_step(world._store, S[S_BROKEN])
+        pl.n_awake = S[S_NAWAKE] if world._sleeping else -1
+        pl.npairs = S[S_NPAIRS]
         pl.profile.defer(self.T, elapsed)
         world._time += dt
         world.steps += 1
         world.fault = None
-        pl.events._sensed = False
-        pl.events.commit(world, int(S[S_NT]), int(S[S_NB]), int(S[S_NA]))
-        tr = pl.events.contacts
-        if tr.keys is not self._keys[int(S[S_EPAR])]:  # the merge kept sleeping ends: new arrays
+        ev = pl.events
+        ev._sensed = False
+        ev.commit(world, S[S_NT], S[S_NB], S[S_NA])
+        if ev.contacts.keys is not self._keys[S[S_EPAR]]:  # the merge kept sleeping ends: new arrays
             self.key = None
