@@ -11,7 +11,9 @@ over the contacts), any body is at most P = (bodies - 1) contacts from any other
 the static or kinematic body the cluster rests on, so its push-out speed is at most P v_p, and
 the allowance per manifold is m_k ((P v_p)^2 / 2 + |g| d_k).  A lone pair has P = 1: the
 contact's own m_k v_p^2 / 2.  A light body overlapping a heavy one brings only its own mass
-(m_k < the lighter mass), not the heavy body's.
+(m_k <= the lighter mass), not the heavy body's.  Not covered, and refused when the guard sees it:
+a light body created between two heavy ones, which pushes them apart at v_p each (the heavy
+bodies' energy, m_k of each manifold being the light body's).
 """
 from __future__ import annotations
 
