@@ -4,10 +4,12 @@ Invariants (issue 20): (1) only the documented errors -- ValueError while buildi
 e.g. a density that gives no finite mass) and SimulationError from a step, naming its stage
 (one of STAGES) with ``world.fault`` set to it; anything else is a **crash**; (2) never a
 non-finite state or energy after an accepted step (**silent non-finite**); (3) the total energy
-(kinetic + gravity + springs) after an accepted step never exceeds the stated bound of
-physics/step/energy_guard.py (EnergyBound), unless a motor or mouse joint drives the world
-(**energy gain**: the guard should have refused the step); (4) no step hangs: a case over CASE_SECONDS is **slow**;
-memory is reported as the process's peak RSS (world.max_pairs bounds what a step allocates).
+(kinetic + gravity from the start + springs, computed here: energy.py) after an accepted step
+never exceeds the stated bound of physics/step/energy_guard.py (EnergyBound), unless a motor or
+mouse joint drives the world (**energy gain**: the guard should have refused the step); (4) no
+step hangs: a case over CASE_SECONDS is **slow**; memory is reported as the process's peak RSS
+(world.max_pairs bounds what a step allocates).  Each case also reports ``gain``, its largest
+accepted (E - E0) / starting energy scale, and ``gain_mode``, the mode that stepped to it.
 """
 from __future__ import annotations
 
@@ -20,38 +22,13 @@ import numpy as np
 
 import physics
 from physics.errors import SimulationError
-from physics.step.energy_guard import noise_floor, push_allowance
-
+from .energy import EnergyBound
 from .worlds import build
 
 STAGES = {"begin", "broadphase", "collide", "solve", "sleep"}
 CASE_SECONDS = 60.0
 WARM_CASES = 40  # warm-up cases of another seed (base -1), untimed
 BAD = ("crash", "silent_nonfinite", "energy_gain", "slow")
-
-
-def energies(w) -> tuple[float, float]:
-    """(total energy, its scale: kinetic + springs + |gravity potential|) in J."""
-    with np.errstate(all="ignore"):
-        ke = w.kinetic_energy()
-        pe = w.potential_energy()
-        springs = sum(0.5 * s.stiffness * (s.length - s.rest_length) ** 2 for s in w.springs)
-    return ke + pe, ke + springs + abs(pe - springs)
-
-
-class EnergyBound:
-    """The stated bound (physics/step/energy_guard.py, world.energy_guard = r): from the start,
-    E <= E0 + r (S0 + S / 2) + the largest push-out allowance of any step so far + the noise floor.  Energies are
-    computed here, not by the guard, so a guard that misses its own bound is found."""
-
-    def __init__(self, w):
-        self.e0, self.s0 = energies(w)
-        self.push = 0.0
-        self.r = w.energy_guard
-
-    def limit(self, w, scale: float) -> float:
-        self.push = max(self.push, push_allowance(w))
-        return self.e0 + self.r * (self.s0 + 0.5 * scale) + self.push + noise_floor(w, w.dt)
 
 
 def reason(exc: SimulationError) -> str:
@@ -108,7 +85,7 @@ def run_case(seed: int, base: int = 0, seconds: float = CASE_SECONDS) -> dict:
                 "trace": traceback.format_exc()[-800:]}
     w = plan.world
     out = {"mode": w.solver, "dt": w.dt, "bodies": len(w.bodies), "springs": len(w.springs),
-           "joints": len(w.joints)}
+           "joints": len(w.joints), "driven": plan.driven, "overlapping": plan.overlapping, "gain": 0.0}
     bound = EnergyBound(w)
     for k in range(plan.steps):
         if k == plan.switch_at:
@@ -122,10 +99,11 @@ def run_case(seed: int, base: int = 0, seconds: float = CASE_SECONDS) -> dict:
         except Exception as exc:  # noqa: BLE001
             return {**out, "outcome": "crash", "steps": k, "detail": f"{type(exc).__name__}: {exc}"[:300],
                     "trace": traceback.format_exc()[-800:]}
-        e, scale = energies(w)
+        e, scale = bound.energy(w)
         if not finite_state(w) or not math.isfinite(e):
             return {**out, "outcome": "silent_nonfinite", "steps": k + 1, "detail": f"energy {e}"}
-        limit = bound.limit(w, scale)
+        limit = bound.limit(w, e, scale)
+        out.update(gain=bound.gain, gain_mode=bound.gain_mode)  # (E - E0) / starting scale, largest so far
         if not plan.driven and e - limit > 1e-9 * (scale + bound.s0 + abs(bound.e0)):
             return {**out, "outcome": "energy_gain", "steps": k + 1,
                     "detail": f"energy {e:.4g} J > bound {limit:.4g} J at step {k + 1}"}

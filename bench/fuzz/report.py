@@ -23,7 +23,27 @@ def summarise(cases: list[dict], seed: int, seconds: float, peak_mb: float) -> d
         "energy_guard_by_mode": dict(Counter(c.get("mode", "?") for c in cases if c.get("reason") == "energy_guard")),
         "by_mode": dict(Counter(c.get("mode", "none") for c in cases)),
         "failures": [dict(c, case=i) for i, c in enumerate(cases) if c["outcome"] in BAD][:50],
+        **gains(cases),
     }
+
+
+#: the issue's aim: no accepted gain above 1 % of the starting energy scale without input
+GAIN_AIM = 0.01
+
+
+def gains(cases: list[dict]) -> dict:
+    """Per mode, the largest accepted gain (E - E0) / starting energy scale of the cases without a
+    motor or mouse joint (check.EnergyBound), the cases above GAIN_AIM and the worst ten."""
+    free = [(i, c) for i, c in enumerate(cases) if c.get("gain_mode") and not c.get("driven")]
+    top: dict = {}
+    for _, c in free:
+        top[c["gain_mode"]] = max(top.get(c["gain_mode"], 0.0), c["gain"])
+    over = Counter(c["gain_mode"] for _, c in free if c["gain"] > GAIN_AIM)
+    worst = sorted(free, key=lambda ic: -ic[1]["gain"])[:10]
+    return {"largest_gain_by_mode": {k: float(f"{v:.4g}") for k, v in sorted(top.items())},
+            "gains_over_aim_by_mode": dict(over),
+            "worst_gains": [{"case": i, "mode": c["gain_mode"], "gain": float(f"{c['gain']:.4g}"),
+                             "dt": c.get("dt"), "overlapping": c.get("overlapping")} for i, c in worst]}
 
 
 def section(s: dict) -> str:
@@ -73,6 +93,13 @@ def section(s: dict) -> str:
         "Box2D's compounds scene gained 4.5e6 J in one step in penalty); "
         "physics/solvers/classic/penalty_load.py scales those contacts back to the stability bound "
         "(tests/test_penalty_load.py).", ""]
+    if "largest_gain_by_mode" in s:
+        lines += ["Largest accepted gain (E - E0) / starting energy scale per mode, cases without a motor or "
+                  "mouse joint (E: kinetic + gravity from the start + springs, computed by the fuzzer; the aim "
+                  f"is {GAIN_AIM:.0%}): " + ", ".join(f"{k} {v:.3g}" for k, v in s["largest_gain_by_mode"].items())
+                  + "; cases above the aim: " + (", ".join(f"{k} {v}" for k, v in
+                                                          sorted(s["gains_over_aim_by_mode"].items())) or "none")
+                  + ".", ""]
     if s["failures"]:
         lines.append("Failing cases (outcome, mode, detail):")
         lines.append("")

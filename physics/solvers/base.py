@@ -30,6 +30,13 @@ class SolverMode:
         """Advance bodies by ctx.dt: forces, contacts (store.contacts.cur), springs, positions."""
         raise NotImplementedError
 
+    def push_speed(self, values: dict) -> float:
+        """The largest speed (m/s) at which this mode's contacts push overlap apart, with its
+        settings ``values``: the energy guard allows each overlapping contact the energy of
+        leaving at it (physics/step/energy_sums.push_sum).  0: the mode pushes overlap out by
+        moving positions only, which leaves no speed behind."""
+        return 0.0
+
     def stages(self, store, values: dict, integrator: str) -> list[str]:
         """Names of the stages this mode runs (for ``World.info``); ``values``: its settings."""
         return [self.name]

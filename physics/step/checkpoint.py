@@ -122,7 +122,7 @@ class Checkpoint:
         self.Q = np.zeros(cap)
         self.V = np.zeros((cap, 2))
         self.W = np.zeros(cap)
-        self.count = np.zeros(cap, dtype=np.int64)  # scratch: contact manifolds per body (energy_sums)
+        self.cluster = np.zeros((3, cap), dtype=np.int64)  # scratch: the push-out allowance's clusters (push_out.py)
 
     def ensure(self, n):
         if n > len(self.Q):

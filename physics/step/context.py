@@ -33,6 +33,7 @@ CONTEXT_FIELDS = (
     ("time_to_sleep", np.float64),
     ("integrator", np.int64),     # code in options.INTEGRATORS
     ("narrowphase", np.int64),    # code in options.NARROWPHASES
+    ("push_speed", np.float64),   # the mode's push-out speed cap (m/s): the energy guard's allowance
 )
 
 
@@ -94,6 +95,7 @@ class ModeParams(Record):
         super().__init__([(name, setting_dtype(s)) for name, s in settings.items()] + list(derived))
         self.version = -1
         self.values: dict = {}  # the settings as given (choices as strings), for derive()
+        self.push_speed = 0.0  # the mode's push-out speed cap with these settings (Pipeline.params)
 
     def load(self, values: dict, version: int) -> None:
         for name, s in self._settings.items():

@@ -8,7 +8,7 @@ first step, or the first one after an edit or an external input) with energy E0 
 scale S0 = KE + elastic + gravitational above the lowest dynamic body (all >= 0) and S the
 scale now,
 
-    E <= E0 + r (S0 + S / 2) + 1/2 sum_i m_i (c_i v_p)^2 + W + F,
+    E <= E0 + r (S0 + S / 2) + sum_k m_k ((P_k v_p)^2 / 2 + |g| d_k) + W + F,
 
 - ``r`` (``world.energy_guard``, default 1): the energy present may grow by its own size.
   Symplectic Euler's energy error on an oscillator is O(omega h) of its energy and the seed
@@ -17,11 +17,16 @@ scale now,
   as m g^2 h^2 n^2, at least 3/2 m g^2 h^2 after one step.  An explosion has E ~ S, so it is
   caught once S > 2 (E0 + r S0 + allowance); those issue 20 found were 1e3..1e24 times the
   energy present.
-- the push-out allowance: bodies created or moved inside each other are pushed apart at up
-  to v_p = PUSH_SPEED per contact, i.e. body i with c_i contact manifolds may leave at c_i v_p
-  (n bodies heaped in one place fan out at up to (n - 1) / 2 times a mode's push-out speed;
-  soft_step's is 3 m/s, penalty's 2).  The largest allowance seen since the reference counts,
-  so a body pushed out earlier keeps its speed.
+- the push-out allowance (push_out.py): push-out may add only the energy of separating the
+  overlap it found.  A manifold k of depth d_k > 0 between bodies a and b may leave at up to the
+  mode's push-out speed v_p (SolverMode.push_speed: soft_step's push_out_speed, 3 m/s;
+  penalty's and hybrid's, 2 m/s; sequential_impulse's Baumgarte cap, 10 m/s; 0 where push-out
+  only moves positions: split impulses, impulse's projection), times P_k, the number of
+  contacts a push can travel through in its cluster of overlapping bodies (1 for a lone pair),
+  and be lifted apart by d_k against gravity: m_k ((P_k v_p)^2 / 2 + |g| d_k), with
+  m_k = 1 / (1/m_a + 1/m_b), at least the contact's effective mass along its normal.  A light
+  body overlapping a heavy one is allowed its own energy, not the heavy body's.  The largest
+  allowance seen since the reference counts, so a pair pushed out earlier keeps its speed.
 
 - the scale measures gravitational energy from the lowest dynamic body, sum_i m_i |g| (h_i -
   h_min), not from y = 0: where the origin lies is the user's choice, and a world 100 km up
@@ -55,10 +60,7 @@ from ..store import DYNAMIC
 from .energy_bound import (ACTIVE, E0, E_OUT, E_START, LAST, LIMIT_OUT, NOISE_SPEED, P_START, PUSH_MAX, S0,
                            SLOTS, WORK, guard_begin, guard_excess)
 from .energy_sums import SUMS, motor_power
-
-#: speed (m/s) per contact manifold at which push-out may separate overlapping bodies
-PUSH_SPEED = 10.0
-
+from .push_out import push_allowance  # noqa: F401  (the numpy reference, with the others here)
 
 def energies(world) -> tuple[float, float]:
     """(total energy E, its scale S) of the world in J: the numpy reference of what the step's
@@ -95,20 +97,6 @@ def floor_for(mass: float, world, dt: float) -> float:
     """The noise floor of ``mass`` kg of dynamic bodies in ``world`` after a step of ``dt`` (J)."""
     g = math.hypot(world._gravity[0], world._gravity[1])
     return mass * (g * world.linear_slop + 0.5 * (g * dt) ** 2 + 0.5 * NOISE_SPEED ** 2)
-
-
-def push_allowance(world) -> float:
-    """1/2 sum_i m_i (c_i PUSH_SPEED)^2 over the dynamic bodies in this step's contacts (J)."""
-    store = world._store
-    C = store.contacts.cur
-    nc = store.contacts.n
-    if nc == 0:
-        return 0.0
-    B = store.bodies.view
-    n = store.bodies.n
-    count = np.bincount(np.concatenate([C.a[:nc], C.b[:nc]]), minlength=n)[:n]
-    dyn = B.kind[:n] == DYNAMIC
-    return 0.5 * float((B.m[:n][dyn] * (count[dyn] * PUSH_SPEED) ** 2).sum())
 
 
 def _motor_power(world) -> tuple[float, bool]:

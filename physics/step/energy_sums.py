@@ -16,7 +16,7 @@ from ..store.joints import BROKEN, MOTOR, MOUSE, REVOLUTE, WHEEL
 from .checkpoint import spring_energy
 
 #: the slots of the sums array: kinetic, gravitational, elastic energy (J), dynamic mass (kg),
-#: external input (1.0 or 0.0), push-out allowance (J, after the step only), and the lowest
+#: external input (1.0 or 0.0), push-out allowance (J, after the step only: push_out.py), and the lowest
 #: gravitational potential of a dynamic body (J/kg: min over i of -g . x_i)
 KE, PE, ELASTIC, MASS, EXTERNAL, PUSH, LOWEST = range(7)
 SUMS = 7
@@ -56,23 +56,6 @@ def guard_sums(B, S, n, ns, gx, gy, out):
     out[MASS] = mass
     out[EXTERNAL] = ext
     out[LOWEST] = lowest
-
-
-@kernel
-def push_sum(B, n, Ca, Cb, nc, count, speed):
-    """1/2 sum_i m_i (c_i speed)^2 over the dynamic bodies, c_i body i's contact manifolds
-    (``count``: int scratch of at least n)."""
-    for i in range(n):
-        count[i] = 0
-    for k in range(nc):
-        count[Ca[k]] += 1
-        count[Cb[k]] += 1
-    total = 0.0
-    for i in range(n):
-        if B.kind[i] == DYNAMIC and count[i] > 0:
-            v = count[i] * speed
-            total += 0.5 * B.m[i] * v * v
-    return total
 
 
 @kernel(runtime=True)

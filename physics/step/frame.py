@@ -11,8 +11,8 @@ from ..geometry.transform import update_geometry
 from ..store.flat import bodies_view, fixtures_view, springs_view, verts_view
 from .checkpoint import count_nonfinite, save_state
 from .contact_events import touch_update
-from .energy_guard import PUSH_SPEED
-from .energy_sums import PUSH, guard_sums, push_sum
+from .energy_sums import PUSH, guard_sums
+from .push_out import push_sum
 
 
 @kernel
@@ -26,11 +26,12 @@ def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums):
 
 
 @kernel
-def end_step(ctx, B, S, bad, why, Ca, Cb, nc, count, sums, key, npts, depth, jn, prev, nprev, out, begin,
+def end_step(ctx, B, S, bad, why, Ca, Cb, nc, cluster, sums, key, npts, depth, jn, prev, nprev, out, begin,
              absent):
     """Count bodies whose state or energy is not finite (slots into ``bad``, the reason in
     ``why``: checkpoint.count_nonfinite); when all is finite, the energy guard's sums of the
-    state the step ends in (with the push-out allowance of its ``nc`` contacts) into ``sums``,
+    state the step ends in (with the push-out allowance of its ``nc`` contacts at the mode's
+    push-out speed ``c.push_speed``: push_out.push_sum, ``cluster`` its scratch) into ``sums``,
     and clear user forces.  Then the touching merge of the ``nc`` rows (``key``, ``npts``,
     ``depth``, ``jn``) with last step's keys ``prev[:nprev]`` into ``out``, ``begin``, ``absent``
     (contact_events.touch_update; kept only if the step is accepted).  Returns the non-finite
@@ -40,7 +41,8 @@ def end_step(ctx, B, S, bad, why, Ca, Cb, nc, count, sums, key, npts, depth, jn,
     k = count_nonfinite(B, n, S, c.ns, bad, why)
     if k == 0:
         guard_sums(B, S, n, c.ns, c.gx, c.gy, sums)
-        sums[PUSH] = push_sum(B, n, Ca, Cb, nc, count, PUSH_SPEED)
+        g = (c.gx * c.gx + c.gy * c.gy) ** 0.5
+        sums[PUSH] = push_sum(B, n, Ca, Cb, npts, depth, nc, c.push_speed, g, cluster)
         for i in range(n):
             B.f[i, 0] = 0.0
             B.f[i, 1] = 0.0
@@ -57,8 +59,8 @@ def begin_step_flat(ctx, BF, BI, FF, FI, ghost, wghost, VF, VI, nf, X, Q, Vel, W
 
 
 @kernel(runtime=True)
-def end_step_flat(ctx, BF, BI, SF, SI, bad, why, Ca, Cb, nc, count, sums, key, npts, depth, jn, prev, nprev,
+def end_step_flat(ctx, BF, BI, SF, SI, bad, why, Ca, Cb, nc, cluster, sums, key, npts, depth, jn, prev, nprev,
                   out, begin, absent):
     """``end_step`` over the body and spring tables' flat arrays."""
-    return end_step(ctx, bodies_view(BF, BI), springs_view(SF, SI), bad, why, Ca, Cb, nc, count, sums, key, npts,
+    return end_step(ctx, bodies_view(BF, BI), springs_view(SF, SI), bad, why, Ca, Cb, nc, cluster, sums, key, npts,
                     depth, jn, prev, nprev, out, begin, absent)

@@ -101,7 +101,7 @@ class OneCall:
                           *s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.verts.arrays.flat,
                           *s.springs.arrays.flat, *c.cur_cols.flat, *c.prev_cols.flat, pl._pairs, exclude,
                           *self._sort, self._scratch,
-                          ck.X, ck.Q, ck.V, ck.W, ck.bad, ck.why, ck.count, guard.start, guard.end,
+                          ck.X, ck.Q, ck.V, ck.W, ck.bad, ck.why, ck.cluster, guard.start, guard.end,
                           tr.keys, tr._keys2, tr.begin, tr._begin2, tr._absent, tr._absent2,
                           isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, self._v0(len(mode.SB)),
                           JF, JI, JW, JS, kinds,

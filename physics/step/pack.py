@@ -29,8 +29,9 @@ FIELDS = (
     # broad-phase pairs, the body pairs joints exclude from colliding, the pairs' keys and order
     # and the narrow phase's manifold scratch (collision/narrowphase/kernel.py: collide_with)
     "pairs", "exclude", "pkeys", "porder", "mscratch",
-    # the checkpoint (checkpoint.py), the guard's sums before and after (energy_sums.py)
-    "X", "Q", "V", "W", "bad", "why", "count", "start", "end",
+    # the checkpoint (checkpoint.py) and the push-out allowance's scratch (push_out.py), the guard's
+    # sums before and after (energy_sums.py)
+    "X", "Q", "V", "W", "bad", "why", "cluster", "start", "end",
     # the touching sets and their spares (contact_events.py; roles swap with S_EPAR)
     "EK0", "EK1", "EB0", "EB1", "EA0", "EA1",
     # islands (islands.py) and the joints' links for them

@@ -53,6 +53,7 @@ class Pipeline:
         self.edits = 0  # edits so far (the query cache's key: physics/queries/cache.py)
         self.dirty = True  # the world's settings changed: refresh the context's settings
         self._dt = None
+        self._push_speed = None  # the context's push-out speed cap (the energy guard's allowance)
         self._no_keys = np.zeros(0, np.int64)
         self.one_call = OneCall()  # the step as one compiled call, where the mode has a driver
         self.python_steps = 0  # narrow phases run from Python (the driver's pack is then rebuilt)
@@ -95,7 +96,8 @@ class Pipeline:
             self.dirty = False
 
     def params(self, world) -> ModeParams:
-        """The current mode's parameter record, reloaded when one of its settings changed."""
+        """The current mode's parameter record, reloaded when one of its settings changed; the
+        context's ``push_speed`` is the mode's (SolverMode.push_speed)."""
         mode = world._mode
         par = self._params.get(mode.name)
         if par is None:
@@ -103,6 +105,10 @@ class Pipeline:
         vals = world._settings_store(mode.name)
         if par.version != vals.version:
             par.load(vals.values, vals.version)
+            par.push_speed = mode.push_speed(vals.values)
+        if par.push_speed != self._push_speed:  # another mode, or its setting changed
+            self.ctx.set("push_speed", par.push_speed)
+            self._push_speed = par.push_speed
         return par
 
     # -- stages ---------------------------------------------------------
@@ -214,7 +220,7 @@ class Pipeline:
         C = store.contacts.cur
         nc = store.contacts.n
         return end_step_flat(self.ctx.array, *store.bodies.arrays.flat, *store.springs.arrays.flat, ck.bad, ck.why,
-                             C.a, C.b, nc, ck.count, self._guard.end, C.key, C.count, C.depth, C.jn,
+                             C.a, C.b, nc, ck.cluster, self._guard.end, C.key, C.count, C.depth, C.jn,
                              *self.events.contacts.scratch(nc))
 
     def refuse(self, world, err, stage: str) -> None:

@@ -159,7 +159,7 @@ def _finish(P, B, Sp, C, nc):
         keys, out, begin, absent = P.EK0, P.EK1, P.EB1, P.EA1
     else:
         keys, out, begin, absent = P.EK1, P.EK0, P.EB0, P.EA0
-    k, nt, nb, na = end_step(P.ctx, B, Sp, P.bad, P.why, C.a, C.b, nc, P.count, P.end, C.key, C.count, C.depth,
+    k, nt, nb, na = end_step(P.ctx, B, Sp, P.bad, P.why, C.a, C.b, nc, P.cluster, P.end, C.key, C.count, C.depth,
                              C.jn, keys, S[S_NTOUCH], out, begin, absent)
     S[S_KBAD] = k
     if k:

@@ -35,6 +35,12 @@ class HybridMode(ImpulseMode):
         subs = self.substeps(store, ctx, par, contact_rate(pen) if store.contacts.n else 0.0)
         self.derive_impulses(ctx, par, penalty_params(par.values, float(ctx.get("dt")), subs), subs)
 
+    def push_speed(self, values):
+        # the penalty points' depth term is a velocity servo capped at push_out_speed
+        # (penalty_force.normal_force; a point's cap rises to twice a remembered approach speed,
+        # but that is the impact's own energy coming back, which the guard's scale covers)
+        return float(values["push_out_speed"])
+
     def stages(self, store, values, integrator):
         out = self.force_stages(store, integrator)[:-1] + ["forces:penalty_contacts (slow points)",
                                                            f"integrate:{integrator} (sub-stepped)",

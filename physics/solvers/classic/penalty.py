@@ -64,6 +64,12 @@ class PenaltyMode(SeedMode):
                                    *store.springs.arrays.flat, P, R, JF, JI, JW, JS)
         self.joints_done(store, J, broken)
 
+    def push_speed(self, values):
+        # the penalty points' depth term is a velocity servo capped at push_out_speed
+        # (penalty_force.normal_force; a point's cap rises to twice a remembered approach speed,
+        # but that is the impact's own energy coming back, which the guard's scale covers)
+        return float(values["push_out_speed"])
+
     def stages(self, store, values, integrator):
         return self.force_stages(store, integrator)[:-1] + ["forces:penalty_contacts",
                                                            f"integrate:{integrator} (sub-stepped)"] + \

@@ -10,7 +10,7 @@ from ...constraints.point import point_rows, point_type
 from ...settings import Setting, declare
 from ..base import SolverMode
 from ..joint_settings import GLOBAL as _GLOBAL, joint_position_setting, joint_solver_setting
-from .kernel import BAUMGARTE, GLOBAL, SPLIT, si_step_flat
+from .kernel import BAUMGARTE, GLOBAL, MAX_PUSH, SPLIT, si_step_flat
 
 assert GLOBAL == _GLOBAL
 
@@ -75,6 +75,11 @@ class SequentialImpulse(SolverMode):
                               *store.springs.arrays.flat, self.W, self.M, JF, JI, JW, JS)
         if J is not None:
             after_step(store, broken)
+
+    def push_speed(self, values):
+        # split impulses move positions with pseudo-velocities that are dropped after the move;
+        # Baumgarte's bias is a real velocity, capped at MAX_PUSH (contact_rigid.contact_bias)
+        return MAX_PUSH if values["position_correction"] == "baumgarte" else 0.0
 
     def stages(self, store, values, integrator):
         out = ["integrate:symplectic_euler", "contacts:sequential_impulse",

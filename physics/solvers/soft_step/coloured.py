@@ -66,10 +66,6 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
     V0 = np.empty((n if bouncy else 0, 3))
     for _ in range(p.substeps):
         integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
-        if c.ns > 0:
-            store_velocities(B, n, SB)
-            solve_springs(B, S, c.ns, h)
-            load_velocities(B, n, SB)
         if bouncy:
             save_velocities(SB, n, V0)
         coloured_pass(WARM, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
@@ -79,6 +75,10 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             coloured_pass(SOLVE, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:
                 solve_joints(c, B, J, JW, JS, True, p.inv_h, eq_global)
+        if c.ns > 0:  # last before the move, as kernel.py
+            store_velocities(B, n, SB)
+            solve_springs(B, S, c.ns, h)
+            load_velocities(B, n, SB)
         integrate_row_positions(B, n, SB, h)
         if project:
             refresh_rows(c, B, J, JW)

@@ -106,6 +106,11 @@ class SoftStep(SolverMode):
         if J is not None:
             after_step(store, broken)
 
+    def push_speed(self, values):
+        # the biased rows target at most this separation speed (contact_soft.solve_contacts);
+        # the relax pass then takes it out again, but with relax off it stays
+        return float(values["push_out_speed"])
+
     def stages(self, store, values, integrator):
         out = ["integrate:symplectic_euler (sub-stepped)", "contacts:soft"]
         if store.springs.n:
