@@ -75,7 +75,7 @@ def push_sum(B, n, Ca, Cb, nc, count, speed):
     return total
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def motor_power(JF, JI, BF, BI, nj):
     """(P, dragged): P bounds the power (W) the ``nj`` joints' motors can put in at the bodies'
     current velocities, and ``dragged`` says a mouse joint pulls (the user's input, unbounded).
