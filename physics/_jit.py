@@ -61,7 +61,7 @@ if os.environ.get("STELKROPP_FAST_INLINE", "1") != "0":
     _numba_inline.apply()
 
 
-def kernel(fn=None, *, runtime: bool = False, **kw):
+def kernel(fn=None, *, runtime: bool = False, entry: bool = False, **kw):
     """``@kernel``: numba ``njit(cache=True, fastmath=False)`` for the core's hot loops.
 
     fastmath stays off: determinism and IEEE NaN semantics matter more here
@@ -74,12 +74,41 @@ def kernel(fn=None, *, runtime: bool = False, **kw):
     compiles a callee with its first caller's setting, so the code would depend on which caller
     compiled first.  ``python -m physics precompile`` refuses a runtime-free kernel that returns an
     array (compile_checks.py): its caller would release a reference it was never given.
+
+    ``entry``: Python calls it.  Only entries get numba's Python wrapper (the code that unboxes
+    every argument, for a table namedtuple some 26 arrays); every other kernel is compiled
+    without it and without the C-callable wrapper, which took about a third of a cold compile
+    (the default scene's first step 57 -> 40 CPU s).  Calling a kernel that is not an entry from
+    Python raises RuntimeError naming it (numba would jump to a wrapper that is not there).
     """
     opts = dict(cache=True, nogil=True, _nrt=runtime)
     opts.update(kw)
-    if fn is None:
-        return lambda f: _njit(**opts)(f)
-    return _njit(**opts)(fn)
+    wrap = (lambda f: _njit(**opts)(f)) if entry else (lambda f: _internal(f, opts))
+    return wrap if fn is None else wrap(fn)
+
+
+from numba.core import cpu as _cpu  # noqa: E402
+from numba.core.registry import CPUDispatcher as _CPUDispatcher, CPUTarget as _CPUTarget  # noqa: E402
+from numba.core.registry import cpu_target as _cpu_target  # noqa: E402
+
+
+class _InternalDispatcher(_CPUDispatcher):
+    """A kernel that only compiled code calls (see ``kernel``'s ``entry``)."""
+
+    def __call__(self, *args, **kws):
+        f = self.py_func
+        raise RuntimeError(f"{f.__module__}.{f.__qualname__} is a kernel only compiled code calls: it has no "
+                           "Python entry (physics/_jit.py: kernel(entry=True))")
+
+
+def _internal(f, opts: dict):
+    """``f`` as an internal kernel: numba's njit options without the Python and C wrappers."""
+    o = dict(opts, nopython=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+    cache = o.pop("cache")
+    disp = _InternalDispatcher(f, targetoptions=o)
+    if cache:
+        disp.enable_caching()
+    return disp
 
 
 # -- noalias kernels ----------------------------------------------------------------------------
@@ -88,11 +117,6 @@ def kernel(fn=None, *, runtime: bool = False, **kw):
 # (numba internals, checked against numba 0.68: tests/test_coloured_solve.py greps the machine
 # code for vector instructions, so a numba that drops the flag fails there, not silently).
 # Measured on the coloured contact solve: ~2x per manifold (../shared/notes/solver-speed.md).
-from numba.core import cpu as _cpu  # noqa: E402
-from numba.core.registry import CPUDispatcher as _CPUDispatcher, CPUTarget as _CPUTarget  # noqa: E402
-from numba.core.registry import cpu_target as _cpu_target  # noqa: E402
-
-
 class _NoAliasOptions(_cpu.CPUTargetOptions):
     def finalize(self, flags, options):
         super().finalize(flags, options)

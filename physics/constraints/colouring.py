@@ -62,7 +62,7 @@ def _kept(c, ma, mb, taken):
     return c == 1
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, force_overflow=False):
     """Colour the manifolds 0..nc-1 (bodies ``ca``/``cb``) and lay them out in blocks.
 

@@ -46,7 +46,7 @@ def point_rows(tup, cap: int):
     return tup(**{k: np.zeros((cap,) + shp, dtype=dt) for k, (shp, dt) in tup._shapes.items()})
 
 
-@kernel
+@kernel(entry=True)
 def cross(ax, ay, bx, by):
     return ax * by - ay * bx
 

@@ -17,7 +17,7 @@ import math
 from .._jit import kernel
 
 
-@kernel
+@kernel(entry=True)
 def softness(hertz, zeta, h):
     """(bias_rate, mass_scale, impulse_scale) of a soft constraint; hertz 0 = rigid."""
     if hertz <= 0.0:

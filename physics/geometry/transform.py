@@ -52,7 +52,7 @@ def _fixture_box(F, V, f, px, py, c, s, margin):
     return lo_x - margin, lo_y - margin, hi_x + margin, hi_y + margin
 
 
-@kernel
+@kernel(entry=True)
 def update_geometry(B, F, V, n, nf, dt, spec):
     """Transform every fixture to world space and refresh the fixtures' and bodies' AABBs.
 

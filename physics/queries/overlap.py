@@ -12,7 +12,7 @@ from .distance import core_distance
 from .region import box_candidates, core_of
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def overlapping(F, wv, wc, box, nb, info, order, P, rp, category, mask, out):
     """Slots (into ``out``, sorted) of the fixtures overlapping the core P grown by ``rp``; returns the count."""
     x0 = P[:, 0].min() - rp

@@ -11,7 +11,7 @@ from .ray_shapes import ray_fixture
 from .tree import COUNT, LEFT, RIGHT, START, ray_enters
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def cast_one(F, wv, wn, wc, nb, info, order, px, py, dx, dy, first, category, mask, slots, ts, ns):
     """Hits of the ray p + t d (t in [0, 1]) into slots/ts/ns; returns their count.
 
@@ -66,7 +66,7 @@ def cast_one(F, wv, wn, wc, nb, info, order, px, py, dx, dy, first, category, ma
     return m
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def cast_many(F, wv, wn, wc, nb, info, order, starts, ends, category, mask, slot, t, normal):
     """The nearest hit of each ray starts[i] -> ends[i] (slot -1 and t -1 for a miss)."""
     one = np.empty(1, np.int32)

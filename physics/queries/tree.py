@@ -19,7 +19,7 @@ LEAF = 4
 START, COUNT, LEFT, RIGHT = 0, 1, 2, 3
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def build_tree(box, n):
     """(node boxes (m, 4), node info (m, 4), item order (n,)) for the first ``n`` rows of ``box``."""
     cap = max(2 * n, 1)

@@ -13,7 +13,7 @@ from .._jit import kernel
 from ..store.fixtures import CIRCLE
 
 
-@kernel
+@kernel(entry=True)
 def world_shapes(B, F, V, nf, wv, wn, wc, box):
     """Fill ``wv``/``wn`` (per pool vertex), ``wc`` and ``box`` (per fixture) for ``nf`` fixtures.
 

@@ -17,7 +17,7 @@ from ..store import DYNAMIC
 STATE, ENERGY = 0, 1  # why a step is refused: a non-finite state, or a finite state whose energy is not
 
 
-@kernel
+@kernel(entry=True)
 def save_state(B, n, X, Q, Vel, W):
     for i in range(n):
         X[i, 0] = B.x[i, 0]
@@ -28,7 +28,7 @@ def save_state(B, n, X, Q, Vel, W):
         W[i] = B.w[i]
 
 
-@kernel
+@kernel(entry=True)
 def restore_state(B, n, X, Q, Vel, W):
     for i in range(n):
         B.x[i, 0] = X[i, 0]
@@ -67,7 +67,7 @@ def spring_energy(B, S, s):
     return 0.5 * S.k[s] * stretch * stretch
 
 
-@kernel
+@kernel(entry=True)
 def count_nonfinite(B, n, S, ns, out, why):
     """Writes the slots whose state is NaN or infinite into ``out``; returns how many.
 

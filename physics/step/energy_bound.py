@@ -22,7 +22,7 @@ SLOTS = 10
 NOISE_SPEED = 1e-3
 
 
-@kernel
+@kernel(entry=True)
 def energy_and_scale(sums):
     """(E, S) from a sums array (energy_sums.py); S's gravitational part is measured from the
     lowest dynamic body, sum_i m_i |g| (h_i - h_min), so where the origin lies does not matter."""
@@ -30,7 +30,7 @@ def energy_and_scale(sums):
     return ke + pe + elastic, ke + elastic + max(pe - sums[MASS] * sums[LOWEST], 0.0)
 
 
-@kernel
+@kernel(entry=True)
 def guard_begin(G, start, growth, p_start, dragged):
     """Before a step: a new reference after an edit (the energy differs from the last step's end)
     or external input; the guard is off for a step with input, a drag, or ``growth`` <= 0."""
@@ -49,7 +49,7 @@ def guard_begin(G, start, growth, p_start, dragged):
     G[E_START] = e
 
 
-@kernel
+@kernel(entry=True)
 def guard_excess(G, end, growth, dt, g, slop, p_end):
     """After a step: True (the energy and the bound in ``G[E_OUT]``, ``G[LIMIT_OUT]``) when the
     energy is beyond E0 + r (S0 + S/2) + push-out + motors' work + noise floor."""

@@ -58,7 +58,7 @@ def guard_sums(B, S, n, ns, gx, gy, out):
     out[LOWEST] = lowest
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def motor_power(JF, JI, BF, BI, nj):
     """(P, dragged): P bounds the power (W) the ``nj`` joints' motors can put in at the bodies'
     current velocities, and ``dragged`` says a mouse joint pulls (the user's input, unbounded).

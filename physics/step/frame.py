@@ -15,7 +15,7 @@ from .energy_sums import PUSH, guard_sums
 from .push_out import push_sum
 
 
-@kernel
+@kernel(entry=True)
 def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums):
     """Save the last finite state, then refresh the ``nf`` fixtures' world geometry and AABBs;
     the energy guard's sums of the state the step starts from into ``sums`` (energy_sums.py)."""
@@ -25,7 +25,7 @@ def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums):
     update_geometry(B, F, V, c.n, nf, c.dt, c.spec)
 
 
-@kernel
+@kernel(entry=True)
 def end_step(ctx, B, S, bad, why, Ca, Cb, nc, cluster, sums, key, npts, depth, jn, prev, nprev, out, begin,
              absent):
     """Count bodies whose state or energy is not finite (slots into ``bad``, the reason in
@@ -51,14 +51,14 @@ def end_step(ctx, B, S, bad, why, Ca, Cb, nc, cluster, sums, key, npts, depth, j
     return k, nt, nb, na
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def begin_step_flat(ctx, BF, BI, FF, FI, ghost, wghost, VF, VI, nf, X, Q, Vel, W, SF, SI, sums):
     """``begin_step`` over the tables' flat arrays."""
     begin_step(ctx, bodies_view(BF, BI), fixtures_view(FF, FI, ghost, wghost), verts_view(VF, VI), nf,
                X, Q, Vel, W, springs_view(SF, SI), sums)
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def end_step_flat(ctx, BF, BI, SF, SI, bad, why, Ca, Cb, nc, cluster, sums, key, npts, depth, jn, prev, nprev,
                   out, begin, absent):
     """``end_step`` over the body and spring tables' flat arrays."""

@@ -200,7 +200,7 @@ def update_islands(ctx, B, C, S, JL, parent, min_t, label):
     return awake
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def update_islands_flat(ctx, BF, BI, CF, CI, Cpt, SF, SI, JL, parent, min_t, label):
     """``update_islands`` over the body, contact and spring tables' flat arrays (store/flat.py)."""
     return update_islands(ctx, bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI), JL, parent,
@@ -231,7 +231,7 @@ class Islands:
                                    *store.springs.arrays.flat, links, self.parent, self.min_t, self.label)
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def joint_links_flat(JF, JI, nj, out):
     """(a, b, driving) per unbroken joint of the flat joint table, into ``out``: the rows
     ``update_islands`` reads; returns the row count."""

@@ -58,7 +58,7 @@ class StepPack(structref.StructRefProxy):
 structref.define_proxy(StepPack, StepPackType, list(FIELDS))
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def new_pack(*values):
     """A pack of ``values`` (FIELDS order).  ``StepPack(...)`` would compile numba's own
     constructor for each new pack type in every process (it is not cached); this one is."""

@@ -13,7 +13,7 @@ from ..store import DYNAMIC, STATIC
 from ..store.contacts import PAIR_LOW as LOW
 
 
-@kernel
+@kernel(entry=True)
 def any_asleep(awake, kind, nf):
     """Is one of the ``nf`` fixtures on a sleeping dynamic body?  Stops at the first."""
     for i in range(nf):

@@ -90,7 +90,7 @@ def _scale_impulses(C, nc, r):
                 C.jt[k, p] *= r
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def soft_world_step(P):
     """One step of the world in ``P`` (see the module doc); returns a code."""
     S, T, D, G = P.S, P.T, P.D, P.G

@@ -9,7 +9,7 @@ from ...store.flat import fixtures_view
 from .filter import can_pair, overlap
 
 
-@kernel
+@kernel(entry=True)
 def brute_pairs(B, n, pairs):
     """Overlapping interacting pairs into ``pairs``; returns the total count
     (which may exceed the buffer: then only the first rows are written)."""
@@ -28,7 +28,7 @@ def brute_pairs(B, n, pairs):
     return k
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def brute_pairs_flat(FF, FI, ghost, wghost, n, pairs):
     """``brute_pairs`` over the fixture table's flat arrays (store/flat.py)."""
     return brute_pairs(fixtures_view(FF, FI, ghost, wghost), n, pairs)

@@ -52,7 +52,7 @@ def may_collide(F, keys, i, j):
     return a != b and should_collide(F, i, j) and not _joined(keys, a, b)
 
 
-@kernel
+@kernel(entry=True)
 def filter_pairs(F, pairs, npairs, keys):
     """Compact the fixture pairs ``pairs[:npairs]`` to those that may collide; returns the count."""
     k = 0
@@ -67,7 +67,7 @@ def filter_pairs(F, pairs, npairs, keys):
     return k
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def filter_pairs_flat(FF, FI, ghost, wghost, pairs, npairs, keys):
     """``filter_pairs`` over the fixture table's flat arrays (store/flat.py)."""
     return filter_pairs(fixtures_view(FF, FI, ghost, wghost), pairs, npairs, keys)

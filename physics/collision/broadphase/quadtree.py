@@ -89,7 +89,7 @@ def _leaf_pairs(B, items, box, s, c, reg, tmp, k):
     return k
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def build(B, n, reg, info, items, box, tmp, emit):
     """Build the tree (and, when ``emit``, collect pairs into ``tmp``).
 
@@ -168,7 +168,7 @@ def build(B, n, reg, info, items, box, tmp, emit):
     return k, nodes, reg, info, items, box
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def quadtree_pairs(B, n, reg, info, items, box, tmp, head, pairs):
     """Pairs sorted by (i, j); returns (count, reg, info, items, box) like ``build``."""
     k, _, reg, info, items, box = build(B, n, reg, info, items, box, tmp, True)

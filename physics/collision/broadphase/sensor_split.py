@@ -12,7 +12,7 @@ from ..._jit import kernel
 from .fixture_filter import may_collide
 
 
-@kernel
+@kernel(entry=True)
 def split_sensor_pairs(F, pairs, npairs, keys, spairs):
     """Compact ``pairs[:npairs]`` to the contact pairs and write the sensor pairs to ``spairs``
     (room for ``npairs`` rows); returns (contact pairs, sensor pairs)."""

@@ -173,7 +173,7 @@ def _sweep_bands(B, nb, axis, b0, bstart, ent, tmp):
     return k
 
 
-@kernel
+@kernel(entry=True)
 def sweep_pairs(B, n, state, order, key, b0, b1, bstart, ent, tmp, head, pairs):
     """Pairs sorted by (i, j) into ``pairs``; returns the total count.
 

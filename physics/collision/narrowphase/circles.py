@@ -14,7 +14,7 @@ CIRCLE_CIRCLE = 1 << 16
 POLY_CIRCLE = 2 << 16
 
 
-@kernel(inline="always")
+@kernel(entry=True, inline="always")
 def circle_circle(ax, ay, ra, bx, by, rb, margin, out_p, out_s, out_f):
     """Returns (count, nx, ny); n from A to B.
 
@@ -39,7 +39,7 @@ def circle_circle(ax, ay, ra, bx, by, rb, margin, out_p, out_s, out_f):
     return 1, nx, ny
 
 
-@kernel
+@kernel(entry=True)
 def polygon_circle(v, vn, cx, cy, r, margin, out_p, out_s, out_f):
     """Polygon A against circle B; returns (count, nx, ny), n from A to B.
 

@@ -96,7 +96,7 @@ def _nearest_edge(poly, n):
     return best, bd, bnx, bny
 
 
-@kernel
+@kernel(entry=True)
 def expand(va, vb, poly, n, tol):
     """Run EPA from the CCW polytope poly[:n]; returns (depth, nx, ny)."""
     cap = poly.shape[0]
@@ -116,7 +116,7 @@ def expand(va, vb, poly, n, tol):
         n += 1
 
 
-@kernel
+@kernel(entry=True)
 def penetration(va, vb, sw, si, lam, poly):
     """GJK, then EPA when overlapping; returns (separation, nx, ny).
 
@@ -134,7 +134,7 @@ def penetration(va, vb, sw, si, lam, poly):
     return -depth, -nx, -ny
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def epa(va, vb):
     """Test entry: (depth, nx, ny); depth < 0 is the distance of apart shapes."""
     sw = np.empty((3, 2))

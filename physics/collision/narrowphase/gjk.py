@@ -80,7 +80,7 @@ def closest_points(va, vb, si, lam, count):
     return pax, pay, pbx, pby
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def gjk_distance(va, vb):
     """Test entry: (distance, nx, ny, pax, pay, pbx, pby) for two polygons.
 

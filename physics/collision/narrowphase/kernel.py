@@ -197,7 +197,7 @@ def _write_row(C, row, B, F, fa, fb, a, b, key, count, nx, ny, out_p, out_s, out
     C.mu_d[row] = math.sqrt(F.mu_d[fa] * F.mu_d[fb])
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def manifold_scratch():
     """The scratch arrays one ``_manifold`` call works in (support cores, simplex, clip polygon,
     output points), allocated once per kernel call and reused for every pair."""
@@ -250,7 +250,7 @@ def collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, s
                  sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f)
 
 
-@kernel
+@kernel(entry=True)
 def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, full, dt, spec,
           sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
     row = 0
@@ -276,7 +276,7 @@ def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, full, dt, spec,
     return row
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def collide_flat(ctx, BF, BI, FF, FI, ghost, wghost, VF, VI, pairs, npairs, CF, CI, Cpt, PF, PI, Ppt, n_prev,
                  full=None):
     """``collide_kernel`` over the tables' flat arrays (store/flat.py)."""

@@ -69,7 +69,7 @@ def _lerp(u1, s1, u2, s2, at):
     return at, s1 + f * (s2 - s1)
 
 
-@kernel(inline="always")
+@kernel(entry=True, inline="always")
 def clip(vr, nr, i, vi, ni, margin, out_p, out_s, out_f, flip):
     """Clip the incident edge of ``vi`` against reference edge i of ``vr``.
 

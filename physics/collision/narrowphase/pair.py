@@ -52,7 +52,7 @@ def polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p,
     return sat_pair(va, na, vb, nb, margin, bias, out_p, out_s, out_f)
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def polygon_collide(va, na, vb, nb, method, margin, bias):
     """Test entry: (count, nx, ny, points (2,2), separations (2,), features (2,))."""
     sw = np.empty((3, 2))

@@ -54,7 +54,7 @@ def choose_reference(sa, fa, sb, fb, bias):
     return 0, fa, sa
 
 
-@kernel
+@kernel(entry=True)
 def sat_query(va, na, vb, nb):
     """Test entry: (separation, nx, ny, face, flip), no bias.
 

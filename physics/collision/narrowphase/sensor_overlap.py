@@ -10,7 +10,7 @@ from ..._jit import kernel
 from .kernel import _manifold, manifold_scratch
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def sensor_overlaps(ctx, B, F, V, spairs, ns, out):
     """Write the keys (sensor id << 32) | visitor id of the overlapping pairs of ``spairs[:ns]``
     to ``out``; returns their count (in pair order)."""

@@ -19,3 +19,8 @@ def row_inline(fn):
     passes the tables by value (B, J and the scratch: some 3 KB of array structs), which cost
     about 100 ns a call here; inlined, the pass over the joints is one flat loop."""
     return kernel(fn, inline="always")
+
+
+def row_entry(fn):
+    """``@row_entry``: ``@row_kernel`` that Python calls too (physics/_jit.py: ``entry``)."""
+    return kernel(fn, entry=True)

@@ -6,7 +6,7 @@ from ..._jit import kernel
 from ...store.flat import bodies_view, joints_view
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def kinds_changed(JF, JI, BF, BI, nj, seen):
     """Compare the kind of each joint's two bodies (-1 for the world) with ``seen`` (2 per joint,
     at least ``2 * nj`` long), write the current ones into it, and say whether any differed."""

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-from .jit import row_inline, row_kernel
+from .jit import row_entry, row_inline, row_kernel
 from ...store import DYNAMIC
 from ...store.joints import BROKEN, DISTANCE, MOTOR, MOUSE, PRISMATIC, REVOLUTE, WELD, WHEEL
 from ..body_rows import DCOS, II
@@ -25,7 +25,7 @@ from .weld import prepare_weld
 from .wheel import prepare_wheel
 
 
-@row_kernel
+@row_entry
 def equality_count(J, j):
     """How many equality rows joint j has (0 for motor and mouse joints, ropes, springs, broken)."""
     if J.flags[j] & BROKEN:
@@ -42,7 +42,7 @@ def equality_count(J, j):
     return 0
 
 
-@row_kernel
+@row_entry
 def equality_counts(J, nj, out):
     for j in range(nj):
         out[j] = equality_count(J, j)

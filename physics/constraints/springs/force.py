@@ -80,7 +80,7 @@ def _geometric_rate(B, S, s):
     return rate
 
 
-@kernel
+@kernel(entry=True)
 def spring_rate(B, S, ns):
     """Largest omega = sqrt(k / m_eff), damping rate c / m_eff and geometric omega over the springs.
 

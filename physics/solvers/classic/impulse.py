@@ -59,7 +59,7 @@ def impulse_step(ctx, par, B, C, S, P, R, hybrid, J, JW, JS):
     return end_classic_joints(c, p, B, J, JW, JS)
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def impulse_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, P, R, hybrid, JF, JI, JW, JS):
     """``impulse_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
     ``JF`` None: a world without joints."""

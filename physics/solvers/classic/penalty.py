@@ -36,7 +36,7 @@ def penalty_step(ctx, par, B, C, S, P, R, J, JW, JS):
     return end_classic_joints(c, p, B, J, JW, JS)
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def penalty_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, P, R, JF, JI, JW, JS):
     """``penalty_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
     ``JF`` None: a world without joints."""

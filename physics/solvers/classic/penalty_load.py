@@ -78,7 +78,7 @@ def _gram_product(B, C, nc, P, xs, ys, acc):
             ys[k * 2 + p] = y
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def gram_lambda(B, C, nc, P, iterations):
     """Largest eigenvalue of the PENALTY points' Gram matrix G (power iteration, Rayleigh quotient)."""
     m = 2 * nc

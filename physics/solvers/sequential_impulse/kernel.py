@@ -89,7 +89,7 @@ def si_step(ctx, par, B, C, S, W, M, J, JW, JS):
     return broken
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def si_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, W, M, JF, JI, JW, JS):
     """``si_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
     ``JF`` None: a world without joints."""

@@ -29,7 +29,7 @@ from ...constraints.springs.substep import solve_springs
 from .kernel import GLOBAL
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart, force_overflow, W, GA,
                        GB):
     """One step as kernel.soft_step, the contacts coloured first (colouring.colour_contacts: the

@@ -114,7 +114,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
     return broken
 
 
-@kernel(runtime=True)
+@kernel(entry=True, runtime=True)
 def soft_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, R, SB, JF, JI, JW, JS):
     """``soft_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
     ``JF`` None: a world without joints (no joint code is compiled)."""

@@ -14,12 +14,12 @@ revealing factorisation would do for a consistent system).
 """
 from __future__ import annotations
 
-from ..jit import row_kernel
+from ..jit import row_entry, row_kernel
 
 DROP = 1e-9
 
 
-@row_kernel
+@row_entry
 def symbolic(nr, Ap, Ai, Parent, Lnz, Flag, Lp):
     """Elimination tree and column pointers of L for the pattern (Ap, Ai): entries i <= k of column k."""
     for k in range(nr):
