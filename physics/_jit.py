@@ -87,7 +87,7 @@ def kernel(fn=None, *, runtime: bool = False, entry: bool = False, **kw):
     return wrap if fn is None else wrap(fn)
 
 
-from numba.core import cpu as _cpu  # noqa: E402
+from numba.core import config as _config, cpu as _cpu  # noqa: E402
 from numba.core.registry import CPUDispatcher as _CPUDispatcher, CPUTarget as _CPUTarget  # noqa: E402
 from numba.core.registry import cpu_target as _cpu_target  # noqa: E402
 
@@ -102,7 +102,10 @@ class _InternalDispatcher(_CPUDispatcher):
 
 
 def _internal(f, opts: dict):
-    """``f`` as an internal kernel: numba's njit options without the Python and C wrappers."""
+    """``f`` as an internal kernel: numba's njit options without the Python and C wrappers (the
+    plain function under NUMBA_DISABLE_JIT, as njit gives)."""
+    if _config.DISABLE_JIT:
+        return f
     o = dict(opts, nopython=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
     cache = o.pop("cache")
     disp = _InternalDispatcher(f, targetoptions=o)
@@ -147,6 +150,8 @@ def kernel_noalias(fn=None, *, runtime: bool = False, **kw):
     cache = opts.pop("cache", True)  # a decorator option (njit's), not a target option
 
     def wrap(f):
+        if _config.DISABLE_JIT:
+            return f
         disp = _NoAliasDispatcher(f, targetoptions=opts)
         if cache:
             disp.enable_caching()

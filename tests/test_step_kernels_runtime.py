@@ -32,7 +32,7 @@ def test_per_step_kernel_runs_without_the_runtime(fn):
 
 
 def test_a_kernel_without_the_runtime_cannot_allocate():
-    @kernel(_nrt=False, cache=False)
+    @kernel(entry=True, cache=False)  # runtime-free: the default
     def allocates(n):
         return np.zeros(n).sum()
 

@@ -11,7 +11,7 @@ from .joints import Joints
 from .contacts import Contacts
 
 
-@kernel(runtime=True)
+@kernel(runtime=True, entry=True)
 def bodies_view(F, I):
     """The Bodies view of the flat arrays (F, I)."""
     return Bodies(
@@ -43,7 +43,7 @@ def bodies_view(F, I):
         I[:, 6])
 
 
-@kernel(runtime=True)
+@kernel(runtime=True, entry=True)
 def fixtures_view(F, I, ghost, wghost):
     """The Fixtures view of the flat arrays (F, I, ghost, wghost)."""
     return Fixtures(
@@ -70,7 +70,7 @@ def fixtures_view(F, I, ghost, wghost):
         I[:, 10])
 
 
-@kernel(runtime=True)
+@kernel(runtime=True, entry=True)
 def verts_view(F, I):
     """The Verts view of the flat arrays (F, I)."""
     return Verts(
@@ -80,7 +80,7 @@ def verts_view(F, I):
         F[:, 6:8])
 
 
-@kernel(runtime=True)
+@kernel(runtime=True, entry=True)
 def springs_view(F, I):
     """The Springs view of the flat arrays (F, I)."""
     return Springs(
@@ -94,7 +94,7 @@ def springs_view(F, I):
         I[:, 2])
 
 
-@kernel(runtime=True)
+@kernel(runtime=True, entry=True)
 def joints_view(F, I):
     """The Joints view of the flat arrays (F, I)."""
     return Joints(
@@ -124,7 +124,7 @@ def joints_view(F, I):
         I[:, 4])
 
 
-@kernel(runtime=True)
+@kernel(runtime=True, entry=True)
 def contacts_view(F, I, point):
     """The Contacts view of the flat arrays (F, I, point)."""
     return Contacts(

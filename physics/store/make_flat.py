@@ -11,7 +11,8 @@ and the kernels behind them keep their namedtuple signatures: the views built he
 the numba types of the views store/table.py builds in Python, so each kernel compiles once.
 The functions are written out, not built with exec, because numba caches only functions it can
 find in a source file.  A view returns arrays, so it is compiled with numba's runtime, and so are
-its callers (physics/_jit.py, compile_checks.py): the step's entry points, once per call.
+its callers (physics/_jit.py, compile_checks.py): the step's entry points, once per call.  They
+are entries too: tests/test_store_flat.py calls them from Python against the Python views.
 """
 from __future__ import annotations
 
@@ -67,7 +68,7 @@ def function(table: str) -> str:
     exprs, extra = column_exprs(fields)
     args = ", ".join(["F", "I"] + extra)
     body = ",\n        ".join(exprs)
-    return (f"@kernel(runtime=True)\ndef {table}_view({args}):\n"
+    return (f"@kernel(runtime=True, entry=True)\ndef {table}_view({args}):\n"
             f"    \"\"\"The {tname} view of the flat arrays ({args}).\"\"\"\n"
             f"    return {tname}(\n        {body})\n")
 
