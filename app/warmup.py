@@ -7,8 +7,8 @@ in two (``app.compile_units.gate_units``), each half compiled in a helper proces
 (``app.compile_helper``), one per core: the solver mode in one, the collision stages and the
 frame's kernels in the other.  Not in this process: numba compiles holding the interpreter lock
 for most of its time, and every OpenGL call of a frame gives the lock up and waits up to the
-switch interval (5 ms) to get it back, so a compile thread here made each frame take hundreds of
-milliseconds (the window ran at 4 frames a second and the panels waited).  When both halves are
+switch interval (5 ms) to get it back, so with a compile thread here the window had to throttle
+itself to 4 frames a second (and showed no panels until the end).  When both halves are
 in numba's disk cache, one probe step here loads them (seconds, the only wait under the lock) and
 the scene may run (``ready``).  After that the first helper goes on with the other broad phases
 and solver modes; switching to one loads it from the cache (``prioritize``), or compiles it next

@@ -291,7 +291,8 @@ class Sandbox(pyglet.window.Window):
             if (decor.hidden_springs or decor.selected_springs) else None
         if np.all(np.isfinite(rd.vertices)) and np.all(np.isfinite(rd.center)):
             self.renderer.build(rd, self.camera, self.overlays, decor, spring_ids, quadtree, velocities)
-        self.compare_view.build()
+        if sim_overlays:       # the rivals' render data needs the kernels; they do not step before
+            self.compare_view.build()
         return self.renderer.last_upload_ms
 
     def _quadtree_failed(self, exc):

@@ -52,7 +52,7 @@ def progress_window(app):
     imgui.begin("##progress", None, NOTE_FLAGS & ~imgui.WindowFlags_.always_auto_resize.value)
     frac, label = app.warmup.progress()
     imgui.text_colored(AMBER, "Compiling the physics kernels (first launch only): stepping starts when done")
-    imgui.text_colored(DIM, "Meanwhile select, inspect, pan, zoom and open scenes.")
+    imgui.text_colored(DIM, "Meanwhile select, inspect, edit, pan, zoom and open scenes.")
     imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")
     imgui.push_text_wrap_pos(0)
     imgui.text_colored(DIM, f"{app.warmup.elapsed():.0f} s: {label}")
