@@ -1,5 +1,6 @@
 """Issue 42, "First launch": on a cold kernel cache the panels are drawn from the first frames and
-work while the kernels compile (a click selects a body and the inspector shows it), the play
+work while the kernels compile (the wheel zooms, a right drag pans, a click selects a body and
+the inspector shows it), the play
 state says it waits and for what, and the scene steps by itself once its kernels are compiled.
 A real window under Xvfb with an empty cache directory of its own, real input through xdotool.
 (On the code before issue 42 the panels appeared only once every kernel of the scene was
@@ -56,7 +57,24 @@ def test_the_panels_work_while_the_kernels_compile(launch, tmp_path):
     assert "progress" in st["ui_rects"] and st["ui_values"]["play_state"] == "waiting"
     assert "kernels left" in st["ui_values"]["progress"] and "waiting for" in st["ui_values"]["progress"]
 
+    # the wheel zooms and a right drag pans the scene, while the kernels still compile
+    cam0 = st["camera"]
+    x0, y0, x1, y1 = st["free_rect"]
+    spot = (0.5 * (x0 + x1), y1 - 40)          # empty scene below the bodies, above the stats strip
+    app.xdo("mousemove", int(spot[0]), int(spot[1]))
+    app.settle()
+    app.xdo("click", "4")
+    st = app.settle()
+    assert st["camera"]["scale"] > 1.1 * cam0["scale"], (cam0, st["camera"])
+    app.drag(spot, (spot[0] + 80, spot[1]), steps=8, button=3)
+    app.xdo("mouseup", 3)
+    st = app.settle()
+    moved = abs(cam0["center"][0] - st["camera"]["center"][0])
+    assert moved > 40 / st["camera"]["scale"], (cam0, st["camera"])
+    assert not st["ready"], "pan and zoom must be handled while the kernels compile"
+
     # a click on a body selects it and the inspector shows it, while the kernels still compile
+    st = app.status()
     body = _target(st)
     app.click(*body["screen"])
     st = app.wait(lambda s: s["selection"] == [body["id"]] and s["ui_values"].get("inspector:body") == body["id"],
