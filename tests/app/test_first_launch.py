@@ -1,6 +1,6 @@
 """Issue 42, "First launch": on a cold kernel cache the panels are drawn from the first frames and
 work while the kernels compile (the wheel zooms, a right drag pans, a click selects a body and
-the inspector shows it), the play
+the inspector shows it, another scene opens from the list), the play
 state says it waits and for what, and the scene steps by itself once its kernels are compiled.
 A real window under Xvfb with an empty cache directory of its own, real input through xdotool.
 (On the code before issue 42 the panels appeared only once every kernel of the scene was
@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from sandbox_pixels import ROOT
+from test_saving import centre
 
 pytestmark = [pytest.mark.app, pytest.mark.slow]
 
@@ -82,9 +83,33 @@ def test_the_panels_work_while_the_kernels_compile(launch, tmp_path):
     assert not st["ready"], "the click must be handled while the kernels compile"
     assert st["steps"] == 0 and not st["gl_errors"], st["gl_errors"]
     app.screenshot("selected_while_compiling")
+
+    # another scene (the same mode) opens from the scene list, while the kernels still compile
+    app.xdo("mousemove", int(spot[0]), int(spot[1]))
+    app.settle()
+    app.key("ctrl+shift+s")                     # opens the Scene section (its list of scenes)
+    app.settle()
+    app.key("Escape")
+    pyramid = ROOT / "scenes" / "pyramid.json"   # the same mode and broad phase (sweep) as default.json
+    arch = f"scene:{ROOT / 'scenes' / 'arch.json'}"
+    st = app.wait(lambda s: arch in s["ui_rects"], 20, "the shipped scenes in the list")
+    x, top = centre(st["ui_rects"][arch])        # the first shipped row: in the list's view
+    app.xdo("mousemove", x, top)
+    for _ in range(20):                          # the wheel scrolls the list to pyramid.json
+        st = app.settle()
+        y = centre(st["ui_rects"][f"scene:{pyramid}"])[1]
+        if top <= y <= top + 120:
+            break
+        app.xdo("click", "5")
+    app.xdo("mousemove", x, y)
+    app.settle()
+    app.xdo("click", "--repeat", "2", "--delay", "80", "1")
+    st = app.wait(lambda s: s["path"] == str(pyramid) or s["dialog"], 30, "pyramid.json to open")
+    assert st["dialog"] is None and st["path"] == str(pyramid), f"asked: {st['dialog']}"
+    assert not st["ready"], "the scene must open while the kernels compile"
     k0 = st["kernels_compiled"]
 
-    # once compiled, the scene steps by itself (it was left playing)
+    # once compiled, the scene open then steps by itself (it was left playing)
     st = app.wait(lambda s: s["ready"], COMPILE_TIMEOUT, "the kernels to compile")
     assert st["kernels_compiled"] >= k0 and not st["warm_errors"]
     st = app.wait(lambda s: s["steps"] > 10, 60, "the scene to step")
