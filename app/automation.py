@@ -76,7 +76,7 @@ def status(app) -> dict:
         "warm_errors": app.warmup.errors, "running": app.sim.running, "solver": w.solver,
         "n_bodies": len(w.bodies), "n_springs": len(w.springs),
         "n_joints": len([j for j in w.joints if not ed.is_tool_joint(j)]), "n_tool_joints": len(ed.tool_joints),
-        "bodies": _bodies(app) if small and app.warmup.ready else [],
+        "bodies": _bodies(app) if small else [],     # store reads: no kernel (also while compiling)
         "path": str(ed.doc.path) if ed.doc.path else None, "dirty": ed.doc.dirty,
         "fault": app.sim.fault, "scene_errors": app.files.errors, "gl_errors": app.gl_errors[-20:],
         "messages": [m[0] for m in app.notices.items], "frame_times": app.times.avg, "fps": app.times.fps,

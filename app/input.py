@@ -54,8 +54,9 @@ class SceneInput:
         return self.app.panels.hits.covers(x, self.app.height - y)
 
     def scene_mouse(self, x, y) -> bool:
-        """May a pointer event at (x, y) go to the scene (no panel there, kernels ready)?"""
-        return self.app.warmup.ready and not self.on_panel(x, y)
+        """May a pointer event at (x, y) go to the scene (no panel there)?  Also while the
+        kernels compile: picks and frames read the preview's render data (``app.preview.hold``)."""
+        return not self.on_panel(x, y)
 
     def update_hover(self):
         """The body under the pointer (drawn highlighted), none over a panel or while panning."""
@@ -163,7 +164,7 @@ class SceneInput:
 
     def on_key_press(self, symbol, modifiers):
         io = imgui.get_io()
-        if io.want_capture_keyboard or not self.app.warmup.ready:
+        if io.want_capture_keyboard:     # (shortcuts work while compiling: a step waits, app.simulation)
             return pyglet.event.EVENT_HANDLED
         ctrl = modifiers & (key.MOD_CTRL | key.MOD_COMMAND)
         if symbol == key.ESCAPE:

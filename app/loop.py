@@ -34,10 +34,12 @@ class MainLoop:
     def _throttle(self, started):
         w = self.window
         limit = self.fps_limit
-        if not w.warmup.ready:
-            limit = 4.0      # leave the interpreter to the compiler thread (the scene is paused)
-        elif w.warmup.busy:
-            limit = 20.0
+        if w.warmup.busy:
+            # this process compiles or loads: each OpenGL call gives up the interpreter lock and
+            # waits for it, so leave it to the warmup (4 fps while nothing steps, 20 after)
+            limit = 20.0 if w.warmup.ready else 4.0
+        elif not w.warmup.ready:
+            limit = 30.0     # the helper processes compile on both cores: the panels need little
         if limit and not (self.fixed_step and w.warmup.ready):
             spare = 1.0 / limit - (time.perf_counter() - started)
             if spare > 0:

@@ -4,8 +4,9 @@
 launch has not compiled yet.  ``render_data(world)`` computes the same arrays with numpy from the
 world's store (vertex i of a polygon: x + R(q) local_i; the AABBs unfattened, as the world's own
 refresh gives them with dt = 0 plus half the speculative margin) and writes nothing into the
-world.  ``PreviewWorld`` hands these to code that asks a world for its render data (the camera
-framing), so the first frame shows the scene, framed, while the kernels compile.
+world.  ``hold(world)`` hands these to all code that asks the world for its render data (the
+camera framing, picking, hover, the selection's handles), so the first frame shows the scene,
+framed, and the user can select, inspect, pan and zoom while the kernels compile.
 """
 from __future__ import annotations
 
@@ -75,15 +76,15 @@ def _spring_ends(B, S, ns):
     return ends
 
 
-class PreviewWorld:
-    """``world`` as seen before its kernels exist: ``render_data()`` from numpy, everything else
-    the world's own."""
+def hold(world) -> None:
+    """Until the kernels are loaded, ``world.render_data()`` answers from numpy.  Picking, hover,
+    the selection's handles and framing (F) all ask the world for its render data; its kernel
+    would compile in the window's thread on a cold cache (seconds of a frozen window, and the
+    compiler's lock taken from the warmup).  An instance attribute shadows the method, so every
+    caller gets the preview without knowing about it; ``release`` restores the kernel."""
+    if "render_data" not in vars(world):
+        world.render_data = lambda: render_data(world)
 
-    def __init__(self, world):
-        self._world = world
 
-    def render_data(self) -> RenderData:
-        return render_data(self._world)
-
-    def __getattr__(self, name):
-        return getattr(self._world, name)
+def release(world) -> None:
+    vars(world).pop("render_data", None)

@@ -1,40 +1,40 @@
-"""Compile the physics kernels for the open scene first, on both cores, while the window draws it.
+"""Compile the physics kernels for the open scene first, on both cores, while the window works.
 
-numba compiles on first call; a cold first launch compiles about eighty kernels.  The window
-draws the scene (paused) from its first frame without any kernel (``app.preview``).  The open
-scene's step is split in two (``app.compile_units.gate_units``): this process compiles the solver
-mode and the frame's kernels in a background thread while a helper process
-(``app.compile_helper``) compiles the collision stages on the other core; then one probe step here
-loads the helper's kernels from numba's disk cache and the scene may run (``ready``).  After that
-the helper goes on with the other broad phases and solver modes; switching to one loads it from
-the cache (``prioritize``), or compiles it next if the helper has not got there yet.
+numba compiles on first call; a cold first launch compiles about 130 kernels.  The window draws
+the scene and its panels from its first frame without any kernel (``app.preview``): the user can
+select, inspect, pan, zoom and open scenes; only stepping waits.  The open scene's step is split
+in two (``app.compile_units.gate_units``), each half compiled in a helper process
+(``app.compile_helper``), one per core: the solver mode in one, the collision stages and the
+frame's kernels in the other.  Not in this process: numba compiles holding the interpreter lock
+for most of its time, and every OpenGL call of a frame gives the lock up and waits up to the
+switch interval (5 ms) to get it back, so with a compile thread here the window had to throttle
+itself to 4 frames a second (and showed no panels until the end).  When both halves are
+in numba's disk cache, one probe step here loads them (seconds, the only wait under the lock) and
+the scene may run (``ready``).  After that the first helper goes on with the other broad phases
+and solver modes; switching to one loads it from the cache (``prioritize``), or compiles it next
+if the helper has not got there yet.  Without helpers (``helper=False``, the unit tests) this
+process compiles its half in its own thread, as before.
 
 Each unit that is in the cache leaves a marker file in numba's cache directory (which is keyed
 on the physics sources, so an edit of ``physics/`` starts again): a launch whose units are all
 marked loads everything here, without starting the helper.
 
-Progress is counted in kernels really compiled (both processes), against how many the last cold
-launch compiled for the same units (``COUNTS``, kept beside the cache; ``DEFAULT_COUNTS`` the
-first time).  Python threads share one interpreter lock, so the window throttles its frame rate
-while this process compiles (see ``busy``).
+Progress is counted in kernels really compiled (every process), per unit, against what the last
+cold launch compiled for the units still to do (``app.compile_progress``).  The window throttles
+its frame rate while this process compiles or loads (see ``busy``).
 """
 from __future__ import annotations
 
 import contextlib
-import json
 import os
 import threading
 import time
 import traceback
 from . import compile_units
+from . import compile_progress
 from .compile_helper import CompileHelper
 from .compile_worker import listen
 
-# kernels a cold launch compiles per unit, both processes together (only the progress bar uses
-# it, until a cold launch has saved its own count): the default scene compiled 133 in all; the
-# joint stage's 30 is a guess (not counted yet), corrected by the first cold launch's own count
-DEFAULT_COUNTS = {"solve": 45, "frame": 25, "broad": 15, "narrow": 42, "guard": 6, "step": 1, "joints": 30}
-MIN_COUNTED = 20          # fewer compiled kernels than this: a warm numba cache, not a count
 FIRST_FRAME_WAIT = 10.0   # s: compile here after the first frame, or after this without a window
 
 
@@ -93,10 +93,15 @@ class Warmup:
             mine, theirs = [], []      # all on disk: one probe step here loads it all, at once
         self.mine, self.theirs = mine, theirs
         self.helper = CompileHelper(self._changed) if helper and (theirs or background) else None
-        # when the helper is done with its share first, it takes this process's last units
+        # this process's half in a second helper process too (the module docstring says why)
+        self.second = CompileHelper(self._changed) if helper and mine else None
+        # when the helper is done with its share first, it takes the other half's last units
+        # (the other process then finds them in the cache: compile_units.unit_lock)
         self._initial_queue = theirs + mine[:0:-1] + background
-        self.expected = self._expected(mine + theirs + [self.final] + self.after_final)
-        self.kernels0 = self.counter.n
+        self.todo = [u for u in mine + theirs + [self.final] + self.after_final if not self.cached(u)]
+        self.counts = compile_progress.KernelCounts(self._counts_path())
+        self.here: dict[str, int] = {}          # kernels compiled in this process, per unit
+        self._n0 = self.counter.n               # the counter when the unit running here began
         self.warmed: set[tuple[str, str, str]] = set()
         self.loaded: set[str] = set()           # units loaded (or compiled) in this process
         self.failed: set[str] = set()           # units that raised here (the step then shows why)
@@ -109,7 +114,7 @@ class Warmup:
         self._ready = False
         self._cv = threading.Condition()
         self._wanted: list[tuple[str, str, str]] = []
-        self._busy = True
+        self._busy = False
         self._drawn = threading.Event()
         self.thread = threading.Thread(target=self._run, name="kernel-warmup", daemon=True)
 
@@ -121,22 +126,13 @@ class Warmup:
     def _counts_path(self):
         return None if self.cache is None else self.cache.parent / "kernel_counts.json"
 
-    def _expected(self, units) -> int:
-        """Kernels the gate will compile: what the last cold launch of this cache root compiled,
-        else DEFAULT_COUNTS; 0 when every unit is in the cache."""
-        todo = [u for u in units if not self.cached(u)]
-        if not todo:
-            return 0
-        try:
-            total = int(json.loads(self._counts_path().read_text())["total"])
-        except (OSError, ValueError, KeyError, TypeError, AttributeError):
-            total = 0
-        return total if total > 0 else sum(DEFAULT_COUNTS.get(u.split(":")[0], 0) for u in todo)
-
     # -- running -----------------------------------------------------------------------
     def start(self):
         if self.helper is not None and not self.warm:
             self._start_helper()
+        if self.second is not None:
+            self.second.queue = list(self.mine)
+            self.second.start()
         self.thread.start()
         return self
 
@@ -145,9 +141,10 @@ class Warmup:
         self.helper.start()
 
     def close(self) -> None:
-        """Stop the helper process (the sandbox is closing)."""
-        if self.helper is not None:
-            self.helper.close()
+        """Stop the helper processes (the sandbox is closing)."""
+        for h in (self.helper, self.second):
+            if h is not None:
+                h.close()
 
     def _changed(self):
         with self._cv:
@@ -158,6 +155,8 @@ class Warmup:
         gate the scene runs, and a unit's probe world shares nothing with it (numba's own lock
         serialises compiles), so a rival mode loading here leaves the main world stepping."""
         self.stage = unit
+        self._n0 = self.counter.n
+        self._busy = True
         try:
             with compile_units.unit_lock(unit), (self.lock if locked else contextlib.nullcontext()):
                 compile_units.run(unit)
@@ -168,20 +167,25 @@ class Warmup:
         else:
             compile_units.mark(unit)
             self.loaded.add(unit)
+        finally:
+            self.here[unit] = self.here.get(unit, 0) + self.counter.n - self._n0
+            self._busy = False
 
-    def _wait_helper(self, units, locked: bool = True) -> None:
-        """Wait until the helper settled ``units``; compile here the ones it could not."""
+    def _wait_helper(self, units, locked: bool = True, helper=None) -> None:
+        """Wait until ``helper`` (the first one unless given) settled ``units``; compile here the
+        ones it could not."""
+        helper = helper or self.helper
         units = [u for u in units if not compile_units.cached(u)]
-        if self.helper is None:
+        if helper is None:
             for u in units:
                 self._unit(u, locked)
             return
         for u in units:
-            self.helper.push(u, first=True)
+            helper.push(u, first=True)
         with self._cv:
-            self._cv.wait_for(lambda: all(self.helper.settled(u) for u in units))
+            self._cv.wait_for(lambda: all(helper.settled(u) for u in units))
         for u in units:
-            if u not in self.helper.done:
+            if u not in helper.done:
                 self._unit(u, locked)     # the helper failed or died: compile it here
 
     def frame_drawn(self) -> None:
@@ -190,21 +194,14 @@ class Warmup:
         self._drawn.set()
 
     def _run(self):
-        if not self.warm:      # a cold compile would hold up the first frame; loading would not
-            self._drawn.wait(FIRST_FRAME_WAIT)
-        t_cold = self.counter.n
-        pending = []
-        for u in self.mine:
-            if self.helper is None or self.helper.claim(u):
-                self._unit(u)
-            else:
-                pending.append(u)      # the helper got there first
-        self.stage = "waiting for the other core"
-        self._wait_helper(self.theirs + pending)
+        if self.second is not None:
+            self._compile_apart()
+        else:
+            self._compile_here()
         self._unit(self.final)
         for u in self.after_final:
             self._unit(u)
-        self._save_counts(self.counter.n - t_cold)
+        self.counts.save({u: self._compiled(u) for u in self.todo})
         self.warmed.add(self.key)
         self.loaded.update(self.gate)
         self.t_gate = time.monotonic() - self.t0
@@ -215,16 +212,27 @@ class Warmup:
             self.want_unit(self.joints)    # on disk: loaded now, so the first drag does not wait
         self._serve()
 
-    def _save_counts(self, compiled_here: int) -> None:
-        """Remember how many kernels this cold launch compiled (the next version's progress bar)."""
-        path = self._counts_path()
-        total = compiled_here + self._helper_kernels()
-        if path is None or total < MIN_COUNTED:     # loaded from numba's cache: nothing to learn
-            return
-        try:
-            path.write_text(json.dumps({"total": total}))
-        except OSError:
-            pass
+    def _compile_apart(self):
+        """The gate in the helper processes: the halves at once, then the whole step and (a
+        scene with joints) the joint stage in the second, so that this process only loads."""
+        self.stage = "waiting for the compiler processes"
+        self._wait_helper(self.mine, helper=self.second)
+        self._wait_helper(self.theirs)
+        self._wait_helper([self.final] + self.after_final, helper=self.second)
+        self.second.close()        # the first helper goes on with the background units
+
+    def _compile_here(self):
+        """The gate without a second helper: this process's half in this thread."""
+        if not self.warm:      # a cold compile would hold up the first frame; loading would not
+            self._drawn.wait(FIRST_FRAME_WAIT)
+        pending = []
+        for u in self.mine:
+            if self.helper is None or self.helper.claim(u):
+                self._unit(u)
+            else:
+                pending.append(u)      # the helper got there first
+        self.stage = "waiting for the other core"
+        self._wait_helper(self.theirs + pending)
 
     def _serve(self):
         """After the gate: load the modes the user switches to (``prioritize``) and their joint
@@ -238,9 +246,7 @@ class Warmup:
             return [u for u in later if self.helper.settled(u)]
         while True:
             with self._cv:
-                self._busy = False
                 self._cv.wait_for(lambda: self._wanted or self._wanted_units or settled())
-                self._busy = True
                 unit = self._wanted_units.pop(0) if self._wanted_units else None
                 key = self._wanted.pop(0) if self._wanted and unit is None else None
             if unit is not None:      # the window waits for it: here now, unless the helper is on it
@@ -310,24 +316,39 @@ class Warmup:
     def finished(self) -> bool:
         return self._ready and not self._busy and not (self.helper is not None and self.helper.busy())
 
-    def _helper_kernels(self) -> int:
-        """Kernels the helper compiled for the gate (its background units do not count)."""
-        return self.helper.kernels_for(self.theirs + self.mine) if self.helper is not None else 0
+    def _helpers(self):
+        return [h for h in (self.helper, self.second) if h is not None]
+
+    def _compiled(self, unit: str) -> int:
+        """Kernels compiled for ``unit`` so far, in every process (the one compiling now too)."""
+        n = self.here.get(unit, 0) + sum(h.unit_kernels.get(unit, 0) for h in self._helpers())
+        if self._busy and self.stage == unit:
+            n += self.counter.n - self._n0
+        return n
+
+    def _finished(self, unit: str) -> bool:
+        return unit in self.loaded or unit in self.failed or \
+            any(unit in h.done or unit in h.failed for h in self._helpers())
 
     def kernels_compiled(self) -> int:
-        """Kernels compiled so far for this launch, in both processes."""
-        return self.counter.n - self.kernels0 + self._helper_kernels()
+        """Kernels compiled so far for this launch's gate, in every process."""
+        return sum(self._compiled(u) for u in self.todo)
 
     def progress(self):
-        """(fraction 0..1 of the open scene's kernels compiled, what is being compiled)."""
+        """(fraction 0..1 of the open scene's kernels compiled, the work left and what the scene
+        waits for, in words: ``app.compile_progress``)."""
         if self._ready:
             return 1.0, "ready"
-        done = self.kernels_compiled()
-        frac = min(0.99, done / self.expected) if self.expected else 0.5
-        here = self.counter.label.rsplit(".", 1)[-1]
-        there = self.helper.label.rsplit(".", 1)[-1] if self.helper is not None else ""
-        label = " | ".join(x for x in (here, there) if x) or self.stage
-        return frac, f"{done} kernels compiled: {label}"
+        compiling = {}
+        for h in self._helpers():
+            unit = h.current          # read once: the reader thread clears it
+            if unit is not None:
+                compiling[unit] = h.label.rsplit(".", 1)[-1]
+        if self._busy:
+            compiling[self.stage] = self.counter.label.rsplit(".", 1)[-1]
+        frac, done, left, waiting = compile_progress.progress(self.todo, self._compiled, self._finished,
+                                                              compiling, self.counts)
+        return min(frac, 0.99), compile_progress.describe(done, left, waiting, loading=self._busy)
 
     def elapsed(self) -> float:
         return time.monotonic() - self.t0

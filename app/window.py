@@ -12,7 +12,7 @@ from imgui_bundle import imgui, implot
 from imgui_bundle.python_backends.pyglet_backend import create_renderer
 from OpenGL import GL
 
-from . import compile_units, framing, scrub_marks
+from . import compile_units, framing, preview, scrub_marks
 from .autosave import Autosaver
 from .bound import WorldBound
 from .bound_removal import remove_escapees
@@ -26,9 +26,7 @@ from .input import SceneInput
 from .notices import Notices
 from .probes import Recorder
 from .panels import Panels, apply_style
-from .panels.notes import overlay_note
-from .preview import PreviewWorld
-from .preview import render_data as preview_render_data
+from .panels.notes import overlay_note, progress_window
 from .render import Overlays, Renderer
 from .scenes import initial_world
 from .sensors import SensorView
@@ -79,9 +77,9 @@ class Sandbox(pyglet.window.Window):
         self.editor = Editor(world, path, self.notices, self.camera)
         self.bound = WorldBound()
         self._scene_pending = "new"     # the next frame frames the scene (and, once ready, sets the bound)
-        self._preview_key = self._preview_rd = None
         lock = threading.Lock()
         self.warmup = Warmup(world, lock)
+        preview.hold(world)             # released by the first ready frame
         self.sim = Simulation(self.editor, self.warmup, self.notices, paused=paused, lock=lock)
         self.timeline = Timeline()                # snapshots while playing: the timeline slider
         self.timeline.mark_of = lambda: scrub_marks.mark(self.editor.doc)
@@ -118,6 +116,8 @@ class Sandbox(pyglet.window.Window):
             self.set_caption(cap)
 
     def _document_changed(self, world, path, keep_camera):
+        if not self.warmup.ready:
+            preview.hold(world)        # a scene opened while the kernels compile: picked from numpy
         self.sim.reset()
         self.timeline.clear()                     # a reset or another scene: nothing to go back to
         self.sampler.clear()
@@ -167,6 +167,7 @@ class Sandbox(pyglet.window.Window):
         ready = self.warmup.ready
         phys_ms = upload_ms = 0.0
         if ready:
+            preview.release(self.world)     # the kernels are loaded: the world's own render data
             self.prepare_scene()
             self.keep_timeline()
             phys_ms, steps = self.sim.advance(real_dt, velocities=self.overlays.velocities)
@@ -229,15 +230,14 @@ class Sandbox(pyglet.window.Window):
         self.panels.stats.contacts.rate.on_step(world)   # the selected body's hits (stats readout)
 
     def preview_scene(self) -> float:
-        """Before the kernels are ready: the scene as it stands (paused), framed, from numpy render
-        data (``app.preview``); returns the upload ms."""
+        """Before the kernels are ready: the scene as it stands (not stepping), framed, from numpy
+        render data (``app.preview``), which every pick and frame asks too; returns the upload ms."""
+        preview.hold(self.world)       # each frame: a scene opened meanwhile is a new world
         if self._scene_pending == "new":
-            framing.frame_scene(self.camera, PreviewWorld(self.world), self.free_regions())
+            framing.frame_scene(self.camera, self.world, self.free_regions())
             self._scene_pending = "framed"
-        if self._preview_key != (self.editor.doc.history.version, id(self.world)):
-            self._preview_key = (self.editor.doc.history.version, id(self.world))
-            self._preview_rd = preview_render_data(self.world)
-        return self.build_scene(self._preview_rd, sim_overlays=False)
+        self.input.update_hover()
+        return self.build_scene(sim_overlays=False)
 
     def prepare_scene(self):
         """The first ready frame of a new document: the world bound from the scene's extent and
@@ -291,7 +291,8 @@ class Sandbox(pyglet.window.Window):
             if (decor.hidden_springs or decor.selected_springs) else None
         if np.all(np.isfinite(rd.vertices)) and np.all(np.isfinite(rd.center)):
             self.renderer.build(rd, self.camera, self.overlays, decor, spring_ids, quadtree, velocities)
-        self.compare_view.build()
+        if sim_overlays:       # the rivals' render data needs the kernels; they do not step before
+            self.compare_view.build()
         return self.renderer.last_upload_ms
 
     def _quadtree_failed(self, exc):
@@ -301,8 +302,10 @@ class Sandbox(pyglet.window.Window):
     def draw_ui(self, ready):
         imgui.new_frame()
         self.panels.numbers.begin_frame()
-        if self.show_ui or not ready:
+        if self.show_ui:
             self.panels.draw()
+        elif not ready:
+            progress_window(self)         # the panels hidden (H): the wait is still said
         self.panels.numbers.end_frame()
         if ready:
             self.compare_view.labels()

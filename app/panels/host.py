@@ -70,10 +70,8 @@ class Panels:
         app = self.app
         app.ui_rects.pop("main_window", None)
         app.ui_rects.pop("stats_window", None)
-        if not app.warmup.ready:
-            progress_window(app)
-            return
-        self.main_window()
+        app.ui_rects.pop("progress", None)
+        self.main_window()          # from the first frame: only stepping waits for the kernels
         self.solver.find.tick()
         if self.show_stats:
             self.stats.draw()
@@ -84,6 +82,8 @@ class Panels:
         self.dialogs.draw()
         self.context.draw()
         self.tools.drop()
+        if not app.warmup.ready:
+            progress_window(app)
 
     def caption(self):
         app = self.app

@@ -33,6 +33,7 @@ class InspectorSection(Section):
 
     def draw(self):
         app, ed = self.app, self.app.editor
+        app.ui_values.pop("inspector:body", None)
         sel = [s for s in ed.selection if s.alive]
         laser = selected_laser(app)
         if not sel and laser is not None:
@@ -75,6 +76,7 @@ class InspectorSection(Section):
         self.edit(b, "density", b.density * kg / b.mass)
 
     def body(self, b):
+        self.app.ui_values["inspector:body"] = b.id       # which body the inspector shows (tests)
         imgui.text(f"Body {b.name or b.id}: {body_text(b)}")
         imgui.text_colored(DIM, f"mass {b.mass:.4g} kg   inertia {b.inertia:.4g}   {'awake' if b.awake else 'asleep'}")
         probe_checkboxes(self.app, b)          # near the top: the panel may not show its end

@@ -1,8 +1,6 @@
 """Floating text: the message strip at the bottom of the scene, the compile note at its top, and
-the compile progress window shown until the open scene's kernels are ready."""
+the compile progress shown there until the open scene's kernels are ready."""
 from __future__ import annotations
-
-import time
 
 from imgui_bundle import imgui
 
@@ -43,21 +41,25 @@ def overlay_note(app, text):
 
 
 def progress_window(app):
-    """The compile progress of the open scene's kernels, at the bottom centre."""
-    io = imgui.get_io()
-    w, h = io.display_size.x, io.display_size.y
-    # at the bottom: the scene above it is already drawn (paused) while its kernels compile
-    imgui.set_next_window_pos(imgui.ImVec2(w * 0.5, h - 24), imgui.Cond_.always.value, imgui.ImVec2(0.5, 1.0))
-    imgui.set_next_window_size(imgui.ImVec2(560, 0), imgui.Cond_.always.value)
-    flags = (imgui.WindowFlags_.no_decoration | imgui.WindowFlags_.no_move |
-             imgui.WindowFlags_.no_saved_settings).value
-    imgui.begin("##progress", None, flags)
-    imgui.text("Stelkropp")
-    imgui.text_colored(DIM, "Compiling the physics kernels (first launch only); the scene starts when done")
+    """While the open scene's kernels compile: what stepping waits for and how much is left, at
+    the top of the free area (the panels beside it already work).  Clicks pass through it."""
+    x0, y0, x1, _ = app.free_rect()
+    cap = app.ui_rects.get("caption")
+    y = cap[3] + 4 if cap is not None else y0 + 14       # below the scene's caption, not over it
+    imgui.set_next_window_pos(imgui.ImVec2(0.5 * (x0 + x1), y), imgui.Cond_.always.value, imgui.ImVec2(0.5, 0.0))
+    imgui.set_next_window_size(imgui.ImVec2(min(560.0, max(x1 - x0 - 16, 200.0)), 0), imgui.Cond_.always.value)
+    imgui.set_next_window_bg_alpha(0.85)
+    imgui.begin("##progress", None, NOTE_FLAGS & ~imgui.WindowFlags_.always_auto_resize.value)
     frac, label = app.warmup.progress()
-    dots = "." * (1 + int(time.monotonic() * 2) % 3)
+    imgui.text_colored(AMBER, "Compiling the physics kernels (first launch only): stepping starts when done")
+    imgui.text_colored(DIM, "Meanwhile select, inspect, edit, pan, zoom and open scenes.")
     imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")
-    imgui.text_colored(DIM, f"{label}{dots}  ({app.warmup.elapsed():.0f} s)")
+    imgui.push_text_wrap_pos(0)
+    imgui.text_colored(DIM, f"{app.warmup.elapsed():.0f} s: {label}")
+    imgui.pop_text_wrap_pos()
+    a, b = imgui.get_window_pos(), imgui.get_window_size()
+    app.ui_rects["progress"] = (a.x, a.y, a.x + b.x, a.y + b.y)
+    app.ui_values["progress"] = label
     imgui.end()
 
 

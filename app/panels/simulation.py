@@ -25,6 +25,7 @@ class SimulationSection(Section):
         imgui.same_line()
         if imgui.button("Reset (R)"):
             app.files.request_reset()
+        self.play_state(app, sim)
         w = app.world
         timeline_slider(app, f"steps {w.steps}   bodies {len(app.rd_ids)}")
         ch, v = imgui.slider_float("time scale", sim.time_scale, 0.05, 4.0, "%.2fx",
@@ -51,6 +52,22 @@ class SimulationSection(Section):
             imgui.text_colored(RED, f"Simulation error: {sim.fault}")
             imgui.text_colored(DIM, "The world was reverted to the last good state and paused.")
             imgui.pop_text_wrap_pos()
+
+    @staticmethod
+    def play_state(app, sim):
+        """Before the kernels are loaded the scene does not step: say so under Play, with the
+        progress (the work left, named), and that it plays by itself once compiled."""
+        if app.warmup.ready:
+            app.ui_values["play_state"] = "running" if sim.running else "paused"
+            return
+        app.ui_values["play_state"] = "waiting" if sim.running else "paused, compiling"
+        frac, label = app.warmup.progress()
+        imgui.push_text_wrap_pos(0)
+        imgui.text_colored(AMBER, "Waiting for the kernels: plays when compiled" if sim.running
+                           else "Paused; Play waits for the kernels")
+        imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")
+        imgui.text_colored(DIM, label)
+        imgui.pop_text_wrap_pos()
 
     @staticmethod
     def speed(sim):
