@@ -177,24 +177,23 @@ class OneCall:
         self.build(world, pl)
         self.key = self._key(world, pl, pl.params(world))
 
-    def _mirror(self, world) -> None:
-        """The contact tables swapped inside the driver: so do the Python handles."""
+    @staticmethod
+    def _mirror(world, nc: int) -> None:
+        """The contact tables swapped inside the driver: so do the Python handles (``nc`` rows)."""
         c = world._store.contacts
         c.swap()
-        c.n = int(self.S[S_NC])
+        c.n = nc
 
     def _refused(self, world, pl, code: int) -> None:
-        self._mirror(world)
+        self._mirror(world, int(self.S[S_NC]))
         if code == drv.NONFINITE:
             pl._fail(world, pl._checkpoint.slots(int(self.S[S_KBAD])))
         g = pl._guard
         pl._gained(world, float(g.G[E_OUT]), float(g.G[LIMIT_OUT]))
 
     def _accepted(self, world, pl, dt: float, elapsed: float) -> None:
-        c = world._store.contacts
-        c.swap()  # _mirror's, with the slots read once
-        S = self.S.tolist()
-        c.n = S[S_NC]
+        S = self.S.tolist()  # the slots read once
+        self._mirror(world, S[S_NC])
         if world._store.joints.n:
             after_step(world._store, S[S_BROKEN])
         pl.n_awake = S[S_NAWAKE] if world._sleeping else -1
