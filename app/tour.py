@@ -1,7 +1,9 @@
 """``--tour SCENE ...``: after the launch scene, open each given scene in turn in the same window.
 
 Each scene (the launch scene first) runs ``--frames`` frames once its kernels are ready (and, with
-``--tour-seconds``, until its world has run that many simulated seconds); then its
+``--tour-seconds``, until its world has run that many simulated seconds, played at the time scale
+that fits those seconds into the frames, as the simulation panel's slider would: the world steps
+the same fixed ``dt`` whatever the scale, only fewer frames are drawn per simulated second); then its
 last frame is saved as ``<stem>.png`` in the ``--screenshot`` folder, beside ``<stem>.json``, the
 status the tests read (automation.status) with the OpenGL and scene errors of that scene alone.
 The next scene is opened the way the scene panel opens one (SceneFiles.open_scene); after the last
@@ -43,6 +45,10 @@ class Tour:
     def attach(self, loop):
         loop.hooks.append(self)
         loop.stop_on_error = True
+        # the slider's range is 0.05..4 (panels/simulation.py); a scene that cannot keep up plays
+        # slower, and its screenshot waits for the seconds all the same (before_swap)
+        self.time_scale = min(4.0, max(1.0, self.seconds * loop.fps_limit / max(self.frames, 1)))
+        loop.window.sim.time_scale = self.time_scale
         return self
 
     def _stem(self, window) -> str:
@@ -70,4 +76,5 @@ class Tour:
             return
         self._gl0 = len(w.gl_errors)
         w.files.open_scene(self.queue.pop(0))
+        w.sim.time_scale = self.time_scale
         loop.ready_frames = 0

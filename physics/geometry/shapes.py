@@ -95,8 +95,14 @@ def _check_mass_scale(area: float, inertia: float, what: str, size: float) -> No
                          "a float")
 
 
+def _next(p: np.ndarray) -> np.ndarray:
+    """Each vertex's successor around the outline: ``np.roll(p, -1, axis=0)`` without its
+    generic-axis overhead (a box is built thousands of times when a big scene loads)."""
+    return np.concatenate((p[1:], p[:1]))
+
+
 def _signed_area(p: np.ndarray) -> float:
-    q = np.roll(p, -1, axis=0)
+    q = _next(p)
     return 0.5 * float(np.sum(p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]))
 
 
@@ -116,6 +122,8 @@ class Polygon(Shape):
     outline = None
     """The simple outline (CCW, read-only array) this polygon is a convex piece of, when
     physics.decompose made it; None otherwise (scene files save the outline, not the pieces)."""
+
+    _mp = None  # (vertices, radius, unit-density moments): see _moments
 
     def __init__(self, vertices, radius=0.0, *, _spec=None):
         """``vertices`` (m, body coordinates, either winding) and ``radius`` (m, >= 0): a radius
@@ -224,19 +232,38 @@ class Polygon(Shape):
             return rounded_mass(self.vertices, self.radius)[0]
         return _signed_area(self.vertices - self.vertices.mean(axis=0))
 
+    def _moments(self):
+        """(area, centroid, S) at unit density, S = sum cross(p_i, p_i+1)(p_i.p_i + p_i.p_i+1 +
+        p_i+1.p_i+1) about the centroid (12 J / rho), for a rounded polygon its total second
+        moment; computed once per vertices and radius (both fixed after construction)."""
+        m = self._mp
+        if m is not None and m[0] is self.vertices and m[1] == self.radius:
+            return m[2]
+        if self.radius > 0.0:
+            area, c, j = rounded_mass(self.vertices, self.radius)
+            out = (area, c, j)
+        else:
+            # taken about the vertex mean: cross products of raw coordinates far
+            # from the origin cancel catastrophically (off by 4e-3 m at 1e5 m)
+            o = self.vertices.mean(axis=0)
+            p = self.vertices - o
+            q = _next(p)
+            cr = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
+            a = 0.5 * cr.sum()
+            c = o + ((p + q) * cr[:, None]).sum(axis=0) / (6.0 * a)
+            p = self.vertices - c
+            q = _next(p)
+            cr = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
+            dots = (p * p).sum(1) + (p * q).sum(1) + (q * q).sum(1)
+            out = (0.5 * cr.sum(), c, float((cr * dots).sum()))
+        c.setflags(write=False)
+        self._mp = (self.vertices, self.radius, out)
+        return out
+
     @property
     def centroid(self) -> np.ndarray:
         """Area centre in body coordinates (m), as a 2-array."""
-        if self.radius > 0.0:
-            return rounded_mass(self.vertices, self.radius)[1]
-        # taken about the vertex mean: cross products of raw coordinates far
-        # from the origin cancel catastrophically (off by 4e-3 m at 1e5 m)
-        o = self.vertices.mean(axis=0)
-        p = self.vertices - o
-        q = np.roll(p, -1, axis=0)
-        cr = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
-        a = 0.5 * cr.sum()
-        return o + ((p + q) * cr[:, None]).sum(axis=0) / (6.0 * a)
+        return self._moments()[1].copy()
 
     def mass_properties(self, density: float):
         """Mass, centroid and inertia about the centroid.
@@ -247,17 +274,10 @@ class Polygon(Shape):
         shifted to the centroid first to avoid cancellation far from the origin.
         A rounded polygon sums its core, edge strips and corner sectors (geometry/rounded.py).
         """
+        area, c, s = self._moments()
         if self.radius > 0.0:
-            area, c, j = rounded_mass(self.vertices, self.radius)
-            return density * area, c, density * j
-        c = self.centroid
-        p = self.vertices - c
-        q = np.roll(p, -1, axis=0)
-        cr = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
-        area = 0.5 * cr.sum()
-        dots = (p * p).sum(1) + (p * q).sum(1) + (q * q).sum(1)
-        inertia = density * float((cr * dots).sum()) / 12.0
-        return density * area, c.copy(), inertia
+            return density * area, c.copy(), density * s
+        return density * area, c.copy(), density * s / 12.0
 
     def __repr__(self):
         if self.radius > 0.0:
@@ -330,7 +350,7 @@ class Circle(Shape):
 def _check_convex(pts: np.ndarray, scale: float) -> None:
     """Raise ValueError unless ``pts`` (CCW) is a strictly convex simple polygon."""
     n = len(pts)
-    edges = np.roll(pts, -1, axis=0) - pts
+    edges = _next(pts) - pts
     lengths = np.hypot(edges[:, 0], edges[:, 1])
     for i in range(n):
         if lengths[i] <= 1e-12 * scale:

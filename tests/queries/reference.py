@@ -31,28 +31,27 @@ def world_core(fx):
 
 
 def _axes(P):
+    """Unit edge normals of core P, both ways (a 2-point core has one edge, a point none)."""
     k = len(P)
-    out = []
-    for i in range(k if k > 2 else k - 1):
-        e = P[(i + 1) % k] - P[i]
-        n = np.array([e[1], -e[0]])
-        if np.hypot(*n) > 0:
-            out += [n / np.hypot(*n), -n / np.hypot(*n)]
-    return out
+    if k < 2:
+        return np.zeros((0, 2))
+    E = (np.roll(P, -1, axis=0) - P)[:k if k > 2 else 1]
+    N = np.stack([E[:, 1], -E[:, 0]], axis=1)
+    L = np.hypot(N[:, 0], N[:, 1])
+    N = N[L > 0] / L[L > 0, None]
+    return np.concatenate([N, -N])
 
 
 def separation(P, Q):
     """Distance between convex cores P and Q (0 when they meet) by the largest axis gap."""
-    axes = _axes(P) + _axes(Q)
-    for a in P:
-        for b in Q:
-            d = b - a
-            if np.hypot(*d) > 0:
-                axes.append(d / np.hypot(*d))
-    best = 0.0
-    for u in axes:
-        best = max(best, float(np.min(Q @ u) - np.max(P @ u)), float(np.min(P @ u) - np.max(Q @ u)))
-    return best
+    D = (Q[None, :, :] - P[:, None, :]).reshape(-1, 2)   # every vertex-to-vertex direction
+    L = np.hypot(D[:, 0], D[:, 1])
+    U = np.concatenate([_axes(P), _axes(Q), D[L > 0] / L[L > 0, None]])
+    if not len(U):
+        return 0.0
+    pu, qu = P @ U.T, Q @ U.T                             # projections, one column per axis
+    gaps = np.maximum(qu.min(0) - pu.max(0), pu.min(0) - qu.max(0))
+    return max(0.0, float(gaps.max()))
 
 
 def point_distance(p, P):
@@ -68,8 +67,12 @@ def _first_root(h, lo=0.0, hi=1.0):
     for _ in range(200):
         c, d = b - g * (b - a), a + g * (b - a)
         if h(c) < h(d):
+            if b == d:
+                break           # the bracket stopped shrinking: its fixed point in floats
             b = d
         else:
+            if a == c:
+                break
             a = c
     tm = 0.5 * (a + b)
     hm = min(h(tm), h(hi))
@@ -80,6 +83,8 @@ def _first_root(h, lo=0.0, hi=1.0):
     a, b = lo, tm
     for _ in range(200):
         m = 0.5 * (a + b)
+        if m == a or m == b:
+            break               # adjacent floats: nothing left to halve
         if h(m) <= 0:
             b = m
         else:
