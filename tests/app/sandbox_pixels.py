@@ -1,4 +1,5 @@
 """Pixel checks for sandbox screenshots (colours from app/render/colors.py)."""
+from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -17,12 +18,20 @@ def _known_fills(static=True) -> np.ndarray:
     return np.round(np.concatenate(fills) * 255)
 
 
+@lru_cache(maxsize=None)
+def _near_fill_table(static: bool, tol: int) -> np.ndarray:
+    """(256, 256, 256) bool: True for every 0-255 colour within ``tol`` (every channel: |d| < tol)
+    of a body fill, so a screenshot is classified by one lookup per pixel."""
+    table = np.zeros((256, 256, 256), bool)
+    for r, g, b in _known_fills(static).astype(int):
+        table[max(0, r - tol + 1):r + tol, max(0, g - tol + 1):g + tol, max(0, b - tol + 1):b + tol] = True
+    return table
+
+
 def body_mask(img: np.ndarray, x0, x1, y0, y1, static=True, tol=24) -> np.ndarray:
     """Which pixels of ``img[y0:y1, x0:x1]`` are within ``tol`` (every channel) of a body fill."""
-    area = img[max(0, y0):y1, max(0, x0):x1, :3].astype(int)
-    known = _known_fills(static).astype(int)
-    near = np.abs(area[:, :, None, :] - known[None, None]).max(axis=-1) < tol
-    return near.any(axis=-1)
+    area = img[max(0, y0):y1, max(0, x0):x1, :3].astype(np.intp)
+    return _near_fill_table(bool(static), int(tol))[area[..., 0], area[..., 1], area[..., 2]]
 
 
 def body_pixels(img: np.ndarray, x0=360, x1=1272, y0=0, y1=490, static=True) -> int:
