@@ -17,6 +17,7 @@ def test_soft_body_keeps_its_bodies(launch):
     app = launch(ROOT / "scenes" / "soft_body.json")
     st0 = app.wait_ready(2)
     n0 = st0["n_bodies"]
+    app.set_time_scale(4)   # the slider's top: 20 simulated seconds in about 5 real ones
     # the blobs land, slide off the wedge and roll to the ends of the ground (it took ~10 s to lose one)
     st = app.wait(lambda s: s["time"] >= 20.0 or s["n_bodies"] != n0, 600, "20 s of simulated time")
     assert st["n_bodies"] == n0, [m for m in st["messages"] if "world bound" in m]
