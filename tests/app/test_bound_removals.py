@@ -13,6 +13,7 @@ from test_world_bound import RUNNER_SCENE_BODIES, runner_scene
 pytestmark = pytest.mark.app
 
 
+@pytest.mark.slow
 def test_soft_body_keeps_its_bodies(launch):
     app = launch(ROOT / "scenes" / "soft_body.json")
     st0 = app.wait_ready(2)

@@ -30,6 +30,7 @@ def pyramid(st):
     return [b for b in st["bodies"] if (b["name"] or "").startswith("pyramid")]
 
 
+@pytest.mark.slow
 def test_penalty_mode_pile_survives_a_drag(launch):
     app = launch(None)
     app.wait_ready(20)

@@ -12,6 +12,7 @@ from test_tools import body
 pytestmark = pytest.mark.app
 
 
+@pytest.mark.slow
 def test_gravity_and_density_refusals_in_the_users_terms(launch, tmp_path):
     app = launch(fields_scene(tmp_path / "fields.json"), "--paused")
     st = app.wait_ready(10)

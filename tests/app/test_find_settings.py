@@ -63,6 +63,7 @@ def find(st):
     return st["ui_values"].get("find", {})
 
 
+@pytest.mark.slow
 def test_find_settings_apply_and_undo(launch, tmp_path):
     app = launch(box_scene(tmp_path / "box.json"), "--paused")
     st = app.wait_ready(20)
@@ -112,6 +113,7 @@ def test_find_settings_apply_and_undo(launch, tmp_path):
     print(f"search + apply: {took:.1f} s, {res['candidates']} candidates, choice {choice['key']}")
 
 
+@pytest.mark.slow
 def test_find_settings_cancel_and_a_refusal(launch, tmp_path):
     app = launch(box_scene(tmp_path / "box.json"), "--paused")
     st = app.wait_ready(20)

@@ -23,6 +23,7 @@ USES = {"cap": [("hinge", "click", (-6.6, 4.1)), ("motor", "click", (-6.0, 4.0))
               ("slider", "drag", (2.2, 2.4)), ("rope", "drag", (2.8, 2.4)), ("wheel", "click", (2.5, 2.7))]}
 
 
+@pytest.mark.slow
 def test_joint_tools_pick_capsules_and_every_piece_of_a_concave_body(launch, tmp_path):
     app = launch(scene(tmp_path / "picking.json", [CAPSULE, *WHEELS]), "--paused")
     st0 = app.wait_ready(20)

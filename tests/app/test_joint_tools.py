@@ -83,6 +83,7 @@ def pinks(img, st):
     return out
 
 
+@pytest.mark.slow
 def test_each_joint_tool_draws_undoes_duplicates_and_saves(launch, tmp_path):
     scene = joints_scene(tmp_path / "joints.json")
     app = launch(scene, "--paused")

@@ -24,6 +24,7 @@ def text_pixels(img, rect) -> int:
     return int(np.count_nonzero(a.min(axis=2) > 170))
 
 
+@pytest.mark.slow
 def test_laser_readout_and_moving_the_emitter(launch, tmp_path):
     app = launch(tools_scene(tmp_path / "tools.json"), "--paused")
     st = app.wait_ready(10)

@@ -60,6 +60,7 @@ def expected_beam(st, p, angle):
     return np.array(pts), d
 
 
+@pytest.mark.slow
 def test_laser_place_aim_reflect_ride_undo_delete(launch, tmp_path):
     app = launch(tools_scene(tmp_path / "tools.json"), "--paused")
     st = app.wait_ready(10)

@@ -19,6 +19,7 @@ def use_tool(app, name):
     return app.wait(lambda s: s["tool"] == name, 10, f"the {name} tool")
 
 
+@pytest.mark.slow
 def test_lasers_and_tracers_survive_save_and_reopen(launch, tmp_path):
     path = tools_scene(tmp_path / "tools.json")
     app = launch(path, "--paused")

@@ -27,6 +27,7 @@ def near(px, rgb, tol=30) -> float:
     return float(np.mean(np.all(np.abs(px - np.array(rgb)) < tol, axis=1)))
 
 
+@pytest.mark.slow
 def test_own_colour_with_state_colours_kept(launch, tmp_path):
     app = launch(tools_scene(tmp_path / "tools.json"), "--paused")
     st = app.wait_ready(10)

@@ -89,6 +89,7 @@ def test_mode_switch_wakes_and_reset_keeps_the_solver(launch):
     assert not st["gl_errors"]
 
 
+@pytest.mark.slow
 def test_second_instance_does_not_offer_the_running_ones_autosave(launch, tmp_path):
     cache = {"XDG_CACHE_HOME": str(tmp_path / "xdg_cache")}
     first = launch(tools_scene(tmp_path / "tools.json"), "--paused", "--autosave-interval", "0.5",

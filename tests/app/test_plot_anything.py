@@ -46,6 +46,7 @@ def coloured(img, rect) -> int:
     return int(np.count_nonzero(a.max(axis=2) - a.min(axis=2) > 60))
 
 
+@pytest.mark.slow
 def test_plot_quantities_of_a_body_and_a_spring(launch, tmp_path):
     app = launch(tools_scene(tmp_path / "tools.json"), "--paused")     # paused: c stays put to be clicked
     st = app.wait_ready(10)

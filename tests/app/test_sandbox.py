@@ -156,6 +156,7 @@ def tour(app_env, tmp_path_factory):
     return r, out
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scene", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_shipped_scene_renders_120_frames(scene, tour):
     r, out = tour
@@ -174,6 +175,7 @@ def test_shipped_scene_renders_120_frames(scene, tour):
     assert body_pixels(img, fx0, fx1, fy0, fy1) > 300, "nothing drawn in the free area"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scene", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_shipped_scene_stays_framed_after_5_seconds(scene, tour):
     # a new user opens a scene at 1280x800 and plays: after 5 s what it is about is still drawn in
@@ -188,6 +190,7 @@ def test_shipped_scene_stays_framed_after_5_seconds(scene, tour):
     assert 0 <= x0 < x1 <= 1280 and 0 <= y0 < y1 <= 800
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("scene", SHIPPED, ids=[p.stem for p in SHIPPED])
 def test_shipped_scene_caption_in_the_free_area(scene, tour):
     # a scene whose description says what to try shows that sentence at the top of the free area

@@ -18,6 +18,7 @@ def title_pixels(app, st, name) -> int:
     return int(np.count_nonzero(app.screenshot(name)[y0:y0 + 20, x0:x1].min(axis=2) > 170))
 
 
+@pytest.mark.slow
 def test_scrub_back_past_an_edit_clears_the_unsaved_mark(launch, tmp_path):
     app = launch(tools_scene(tmp_path / "tools.json"), "--paused")
     st = app.wait_ready(10)

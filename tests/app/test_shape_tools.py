@@ -55,6 +55,7 @@ L_AREA = 4 * 1 + 1 * 1.5                        # 5.5 m^2; its convex hull has 7
 L_CENTROID_UP = (4 * 0.5 + 1.5 * 1.75) / L_AREA  # centroid height over the long side: 0.841 m
 
 
+@pytest.mark.slow
 def test_polygon_tool_keeps_a_concave_L_that_rests_on_its_long_side(launch, tmp_path):
     app = launch(scene(tmp_path / "l.json", []), "--paused")
     st0 = app.wait_ready(20)
@@ -133,6 +134,7 @@ def test_sketch_stroke_becomes_a_body_and_a_crossing_one_a_hint(launch, tmp_path
     app.wait(lambda s: len(s["bodies"]) == 1, 10, "the undo")
 
 
+@pytest.mark.slow
 def test_glue_two_boxes_fall_as_one_then_unglue_and_undo(launch, tmp_path):
     boxes = [{"name": "a", "shape": {"box": [1, 1]}, "position": [-1.5, 3.0]},
              {"name": "b", "shape": {"box": [1, 1]}, "position": [1.5, 3.5], "friction": 0.3}]

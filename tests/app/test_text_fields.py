@@ -81,6 +81,7 @@ def test_ctrl_a_focus_angles_and_labels(launch, tmp_path):
     assert not st["gl_errors"]
 
 
+@pytest.mark.slow
 def test_step_rate_is_bounded_and_the_speed_readout_is_measured(launch, tmp_path):
     app = launch(fields_scene(tmp_path / "fields.json"), "--paused")
     st = app.wait_ready(10)

@@ -33,6 +33,7 @@ def same_state(st, want):
         assert (tuple(b["position"]), b["angle"]) == want[b["name"]], (b["name"], st["steps"])
 
 
+@pytest.mark.slow
 def test_timeline_scrub_back_and_play_on(launch, tmp_path):
     path = tools_scene(tmp_path / "tools.json")
     app = launch(path, "--paused")

@@ -34,6 +34,7 @@ def pause(app):
     return app.settle()
 
 
+@pytest.mark.slow
 def test_a_throw_stays_on_the_timeline_and_can_be_rewound(launch, tmp_path):
     path = tools_scene(tmp_path / "tools.json")
     app = launch(path, "--paused")
@@ -71,6 +72,7 @@ def test_a_throw_stays_on_the_timeline_and_can_be_rewound(launch, tmp_path):
     assert st["timeline"]["cleared"] == cleared and st["timeline"]["n"] == tl["n"]
 
 
+@pytest.mark.slow
 def test_single_steps_from_the_past_drop_the_old_future(launch, tmp_path):
     path = tools_scene(tmp_path / "tools.json")
     app = launch(path, "--paused")

@@ -26,6 +26,7 @@ def local_to_world(b, local):
     return (b["position"][0] + c * local[0] - s * local[1], b["position"][1] + s * local[0] + c * local[1])
 
 
+@pytest.mark.slow
 def test_tracer_tool_context_menu_trail_length_and_reset(launch, tmp_path):
     app = launch(tools_scene(tmp_path / "tools.json"), "--paused")
     st = app.wait_ready(10)
