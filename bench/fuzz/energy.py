@@ -16,11 +16,13 @@ from physics.step.energy_guard import noise_floor, push_allowance
 
 class Energy:
     """(E, S) of a world: E = kinetic + gravity from each body's start + springs; the scale S =
-    kinetic + springs + the height the bodies can still fall, sum_i m_i |g| (h_i - h_min), as the
+    kinetic + springs + the height the bodies can still fall, sum_i m_i |g| (h_i - h_min) with h_min
+    the lowest body at the first measure (at least 0), as the
     guard's.  Joints' soft springs are not counted (their energy is the engine's to report)."""
 
     def __init__(self, w):
         self.start = {}  # body id -> centre of mass when first measured (gravity counts from there)
+        self.low0 = None  # the lowest dynamic body's height at the first measure
         self(w)
 
     def __call__(self, w) -> tuple[float, float]:
@@ -41,8 +43,10 @@ class Energy:
                 (ax, ay), (bx, by) = s.endpoints()
                 springs += 0.5 * s.stiffness * (math.hypot(bx - ax, by - ay) - s.rest_length) ** 2
             if heights:
-                low = min(h for _, h in heights)
-                fall = sum(m * g * (h - low) for m, h in heights)
+                # heights from the first measure's lowest body, as the guard's bound after a step
+                low = self.low0 if self.low0 is not None else min(h for _, h in heights)
+                self.low0 = low
+                fall = max(sum(m * g * (h - low) for m, h in heights), 0.0)
         return ke + pe + springs, ke + springs + fall
 
 

@@ -33,6 +33,10 @@ scale now,
   would otherwise get m g 1e5 J of slack, enough to accept what the same world at the origin
   refuses.  The height the bodies can still fall is the world's own scale (a hanging joint
   grid's links swing through it).  E itself may keep any zero: only its change is bounded.
+  After a step, S counts heights from the reference's lowest body, sum_i m_i |g| (h_i - h_min,0)
+  (at least 0), not from the step's: a light body thrown far down by a solver fault would
+  otherwise raise every other body's m g h and accept the gain that threw it (a 6.5 ug disc
+  spun to 7e7 rad/s while a 0.2 ug box fell 9,000 km gave a 141 kg body 1.3e10 J of slack).
 
 - the motors' work W: a joint motor adds at most its force or torque times the relative speed
   it acts on (energy_sums.motor_power), so each step adds dt (P_start + P_end) to W, P the
