@@ -248,3 +248,16 @@ def test_no_eval_or_pickle_in_the_scene_modules():
         src = inspect.getsource(mod)
         for banned in ("eval(", "exec(", "import pickle", "pickle.load", "yaml.load", "marshal"):
             assert banned not in src, f"{banned} in {mod.__name__}"
+
+
+@pytest.mark.parametrize("key", ["positio\n", "x y", "a.b", "1st", "name\r", "\n"])
+def test_a_key_that_is_not_a_plain_name_is_quoted_in_the_path(key):
+    """A problem's path writes a key that is not a plain identifier as ["..."] (JSON-escaped), so
+    the path names exactly the key in the file: an unknown key "positio" + newline was written
+    bodies[1].positio<newline> (a regex's "$" matches before a final newline), a path nothing in
+    the document answers to (the scene fuzzer, seed 1, case 18763)."""
+    d = good()
+    d["bodies"][1][key] = [0, 0]
+    problems, _ = problems_of(d)
+    want = f'bodies[1][{json.dumps(key)}]'
+    assert want in problems and "unknown key" in problems[want], problems

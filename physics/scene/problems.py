@@ -16,7 +16,7 @@ from ..errors import SceneError
 from . import schema as fmt
 from .json_io import NonFinite
 
-_IDENT = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
+_IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")  # fullmatch: "$" would let a trailing newline through
 MAX_PATH_CHARS = 200
 MAX_REASON_CHARS = 400
 _PREVIEW_CHARS = 60
@@ -30,7 +30,7 @@ def json_path(parts) -> str:
             out += f"[{p}]"
         elif not isinstance(p, str):  # scene_from_dict may be handed any dict
             out += f"[{clip(repr(p), MAX_PATH_CHARS)}]"
-        elif _IDENT.match(p):
+        elif _IDENT.fullmatch(p):
             out += f".{p}" if out else p
         else:
             out += f"[{json.dumps(p[:MAX_PATH_CHARS])}]"  # escapes quotes, control characters, surrogates
