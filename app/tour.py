@@ -47,8 +47,8 @@ class Tour:
         loop.stop_on_error = True
         # the slider's range is 0.05..4 (panels/simulation.py); a scene that cannot keep up plays
         # slower, and its screenshot waits for the seconds all the same (before_swap)
-        self.time_scale = min(4.0, max(1.0, self.seconds * loop.fps_limit / max(self.frames, 1)))
-        loop.window.sim.time_scale = self.time_scale
+        # (opening a scene keeps the simulation's time scale: set once for every scene)
+        loop.window.sim.time_scale = min(4.0, max(1.0, self.seconds * loop.fps_limit / max(self.frames, 1)))
         return self
 
     def _stem(self, window) -> str:
@@ -76,5 +76,4 @@ class Tour:
             return
         self._gl0 = len(w.gl_errors)
         w.files.open_scene(self.queue.pop(0))
-        w.sim.time_scale = self.time_scale
         loop.ready_frames = 0

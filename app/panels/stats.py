@@ -79,14 +79,10 @@ class StatsWindow:
         info = app.sampler.info
         imgui.text(f"{app.times.fps:5.1f} fps   frame {ft['frame']:.2f} ms")
         imgui.same_line()
-        # pairs: the touching contacts, a sleeping body's included (they persist while it sleeps)
-        counts = {k: info.get(k, 0) for k in ("bodies", "awake", "springs", "contacts")}
-        app.ui_values["stats_counts"] = counts
-        app.ui_values["stats_contacts"] = app.sampler.last_contacts[0]   # the contacts plot's last value
         imgui.text_colored(DIM, f"  physics {ft['physics']:.2f}  upload {ft['upload']:.2f}  "
                                 f"draw {ft['draw']:.2f}  ui {ft['ui']:.2f} ms   "
-                                f"bodies {counts['bodies']}  awake {counts['awake']}  "
-                                f"springs {counts['springs']}  pairs {counts['contacts']}")
+                                f"bodies {info.get('bodies', 0)}  awake {info.get('awake', 0)}  "
+                                f"springs {info.get('springs', 0)}  pairs {info.get('contacts', 0)}")
         self.contacts.draw()
         s = app.sampler.stats
         t, n = s.arrays()

@@ -43,10 +43,9 @@ class Energy:
                 (ax, ay), (bx, by) = s.endpoints()
                 springs += 0.5 * s.stiffness * (math.hypot(bx - ax, by - ay) - s.rest_length) ** 2
             if heights:
-                # heights from the first measure's lowest body, as the guard's bound after a step
-                low = self.low0 if self.low0 is not None else min(h for _, h in heights)
-                self.low0 = low
-                fall = max(sum(m * g * (h - low) for m, h in heights), 0.0)
+                if self.low0 is None:  # heights from the first measure's lowest body, as the guard's
+                    self.low0 = min(h for _, h in heights)
+                fall = max(sum(m * g * (h - self.low0) for m, h in heights), 0.0)
         return ke + pe + springs, ke + springs + fall
 
 

@@ -36,17 +36,19 @@ def gains(cases: list[dict]) -> dict:
     motor or mouse joint (check.EnergyBound), the cases above GAIN_AIM and the worst ten; also
     split by how the world started (bodies separated, or overlapping: push-out's allowance)."""
     free = [(i, c) for i, c in enumerate(cases) if c.get("gain_mode") and not c.get("driven")]
-    top: dict = {}
-    split = {"separated": {}, "overlapping": {}}
+    split: dict = {"separated": {}, "overlapping": {}}   # per start, mode -> (largest gain, cases over)
     for _, c in free:
-        top[c["gain_mode"]] = max(top.get(c["gain_mode"], 0.0), c["gain"])
         part = split["overlapping" if c.get("overlapping") else "separated"]
         big, n = part.get(c["gain_mode"], (0.0, 0))
         part[c["gain_mode"]] = (max(big, c["gain"]), n + (c["gain"] > GAIN_AIM))
-    over = Counter(c["gain_mode"] for _, c in free if c["gain"] > GAIN_AIM)
+    top, over = {}, Counter()
+    for part in split.values():
+        for m, (big, n) in part.items():
+            top[m] = max(top.get(m, 0.0), big)
+            over[m] += n
     worst = sorted(free, key=lambda ic: -ic[1]["gain"])[:10]
     return {"largest_gain_by_mode": {k: float(f"{v:.4g}") for k, v in sorted(top.items())},
-            "gains_over_aim_by_mode": dict(over),
+            "gains_over_aim_by_mode": {m: n for m, n in sorted(over.items()) if n},
             "gains_by_start": {k: {m: [float(f"{g:.4g}"), n] for m, (g, n) in sorted(v.items())}
                                for k, v in split.items()},
             "worst_gains": [{"case": i, "mode": c["gain_mode"], "gain": float(f"{c['gain']:.4g}"),

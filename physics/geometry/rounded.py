@@ -17,13 +17,19 @@ import math
 import numpy as np
 
 
+def successors(p: np.ndarray) -> np.ndarray:
+    """Each vertex's successor around the outline, ``np.roll(p, -1, axis=0)`` without its
+    generic-axis overhead (a box's moments are taken thousands of times as a big scene loads)."""
+    return np.concatenate((p[1:], p[:1]))
+
+
 def _polygon_moments(p: np.ndarray) -> tuple[float, np.ndarray, float]:
     """(area, first moment (2,), polar second moment) of a CCW polygon about the origin.
 
     Sum over the triangles (0, p_i, p_i+1): A = 1/2 sum c_i, S = 1/6 sum c_i (p_i + p_i+1),
     J = 1/12 sum c_i (p_i.p_i + p_i.p_i+1 + p_i+1.p_i+1) with c_i = p_i x p_i+1.
     """
-    q = np.concatenate((p[1:], p[:1]))  # np.roll(p, -1, axis=0), without its overhead
+    q = successors(p)
     cr = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
     area = 0.5 * float(cr.sum())
     first = ((p + q) * cr[:, None]).sum(axis=0) / 6.0

@@ -12,7 +12,7 @@ import sys
 
 import numpy as np
 
-from .rounded import rounded_mass
+from .rounded import rounded_mass, successors
 
 MAX_POLYGON_VERTICES = 64
 # a vertex turn smaller than this (sine of the angle) counts as collinear
@@ -95,14 +95,8 @@ def _check_mass_scale(area: float, inertia: float, what: str, size: float) -> No
                          "a float")
 
 
-def _next(p: np.ndarray) -> np.ndarray:
-    """Each vertex's successor around the outline: ``np.roll(p, -1, axis=0)`` without its
-    generic-axis overhead (a box is built thousands of times when a big scene loads)."""
-    return np.concatenate((p[1:], p[:1]))
-
-
 def _signed_area(p: np.ndarray) -> float:
-    q = _next(p)
+    q = successors(p)
     return 0.5 * float(np.sum(p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]))
 
 
@@ -247,12 +241,12 @@ class Polygon(Shape):
             # from the origin cancel catastrophically (off by 4e-3 m at 1e5 m)
             o = self.vertices.mean(axis=0)
             p = self.vertices - o
-            q = _next(p)
+            q = successors(p)
             cr = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
             a = 0.5 * cr.sum()
             c = o + ((p + q) * cr[:, None]).sum(axis=0) / (6.0 * a)
             p = self.vertices - c
-            q = _next(p)
+            q = successors(p)
             cr = p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1]
             dots = (p * p).sum(1) + (p * q).sum(1) + (q * q).sum(1)
             out = (0.5 * cr.sum(), c, float((cr * dots).sum()))
@@ -350,7 +344,7 @@ class Circle(Shape):
 def _check_convex(pts: np.ndarray, scale: float) -> None:
     """Raise ValueError unless ``pts`` (CCW) is a strictly convex simple polygon."""
     n = len(pts)
-    edges = _next(pts) - pts
+    edges = successors(pts) - pts
     lengths = np.hypot(edges[:, 0], edges[:, 1])
     for i in range(n):
         if lengths[i] <= 1e-12 * scale:
