@@ -17,7 +17,13 @@ from bench.fuzz.check import run_case
 from bench.fuzz.energy import EnergyBound
 from bench.fuzz.worlds import build
 from physics.errors import SimulationError
-from physics.step.energy_bound import ACTIVE, SLOTS, energy_and_scale, guard_begin, guard_excess
+from physics.step.energy_bound import (
+    ACTIVE,
+    SLOTS,
+    energy_and_scale,
+    guard_begin,
+    guard_excess,
+)
 from physics.step.energy_sums import KE, LOWEST, MASS, PE, SUMS
 
 G_ = 9.81
