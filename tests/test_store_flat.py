@@ -7,6 +7,12 @@ import pytest
 
 from physics.store import Store
 from physics.store import flat
+from physics.store.bodies import Bodies
+from physics.store.contacts import Contacts
+from physics.store.fixtures import Fixtures
+from physics.store.joints import Joints
+from physics.store.springs import Springs
+from physics.store.vertices import Verts
 from physics.store.make_flat import main as make_flat
 
 
@@ -28,15 +34,31 @@ def _contacts(s):
 
 @pytest.mark.parametrize("name", ["bodies", "fixtures", "verts", "springs", "joints", "contacts"])
 def test_a_flat_view_is_the_python_view(name):
+    """The view compiled code builds from the flat arrays has the numba type of the Python view
+    over the same arrays, and each of its fields is that view's column (same memory)."""
     cols = tables()[name]
+    py = {"bodies": Bodies, "fixtures": Fixtures, "verts": Verts, "springs": Springs, "joints": Joints,
+          "contacts": Contacts}[name](**cols)
     fn = getattr(flat, f"{name}_view")
-    got = fn(*cols.flat)
-    want = [cols[f[0]] for f in cols.spec]
-    assert fn.nopython_signatures[-1].return_type.types == tuple(numba.typeof(a) for a in want)
-    for g, w in zip(got, want):
-        assert g.shape == w.shape and g.dtype == w.dtype and np.shares_memory(g, w)
-        w[...] = np.arange(w.size).reshape(w.shape).astype(w.dtype)  # written through one,
-        assert np.array_equal(g, w)                                   # read through the other
+    fn(*cols.flat)
+    assert fn.nopython_signatures[-1].return_type == numba.typeof(py)
+    assert len(py._sources) <= 2 + len(cols.X)  # the flat arrays, not one array per field
+
+    for f in cols.spec:
+        k = f[0]
+        w = getattr(py, k)
+        w[...] = np.arange(w.size).reshape(w.shape).astype(w.dtype)  # written through Python,
+        for g in (_field(k)(py), _field(k, fn)(*cols.flat)):          # read in compiled code
+            assert g.shape == w.shape and g.dtype == w.dtype and np.shares_memory(g, w)
+            assert np.array_equal(g, w)
+
+
+def _field(k, view=None):
+    """A compiled function returning field ``k`` of the table it is given, or of the one ``view``
+    builds from the flat arrays (one function per field: an attribute name is a constant)."""
+    from numba import njit
+    src = f"lambda T: T.{k}" if view is None else f"lambda *a: view(*a).{k}"
+    return njit(eval(src, {"view": view}))
 
 
 def test_flat_py_is_generated_from_the_table_specs(capsys):

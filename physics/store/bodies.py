@@ -7,15 +7,14 @@ body origin that users see.  Polygon vertices live in the vertex pool
 """
 from __future__ import annotations
 
-from collections import namedtuple
-
 from .fixtures import CIRCLE, POLYGON
 from .table import f8, i1, i4, i8
+from .table_view import view_class
 
 DYNAMIC, STATIC, KINEMATIC = 0, 1, 2
 KINDS = {"dynamic": DYNAMIC, "static": STATIC, "kinematic": KINEMATIC}
 KIND_NAMES = {v: k for k, v in KINDS.items()}
-__all__ = ["BODY_FIELDS", "Bodies", "CIRCLE", "DYNAMIC", "KINDS", "KIND_NAMES", "KINEMATIC", "POLYGON", "STATIC"]
+__all__ = ["BODY_FIELDS", "CIRCLE", "DYNAMIC", "KINDS", "KIND_NAMES", "KINEMATIC", "POLYGON", "STATIC", "Bodies"]
 
 
 # name: (per-entry shape, dtype)
@@ -47,4 +46,4 @@ BODY_FIELDS = {
     "tau": ((), f8),        # user torque accumulator
     "id": ((), i8),         # stable id (handle)
 }
-Bodies = namedtuple("Bodies", list(BODY_FIELDS))
+Bodies = view_class("Bodies", BODY_FIELDS, "bodies")

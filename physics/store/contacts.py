@@ -27,11 +27,10 @@ solver's own arrays, never here.
 """
 from __future__ import annotations
 
-from collections import namedtuple
-
 import numpy as np
 
 from .table import allocate, f8, i1, i4, i8
+from .table_view import view_class
 
 MAX_POINTS = 2
 
@@ -61,7 +60,7 @@ PAIR_LOW = 0xFFFFFFFF
 #: the per-point state the narrow phase carries from a step's rows to the next step's
 CARRIED = ("jn", "jt", "stick", "approach")
 
-Contacts = namedtuple("Contacts", list(CONTACT_FIELDS))
+Contacts = view_class("Contacts", CONTACT_FIELDS, "contacts")
 
 
 class ContactBuffer:

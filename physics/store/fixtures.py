@@ -13,11 +13,10 @@ the broad phase can run over fixtures exactly as it ran over bodies.
 """
 from __future__ import annotations
 
-from collections import namedtuple
-
 import numpy as np
 
 from .table import Table, f8, i1, i4, i8
+from .table_view import view_class
 
 u8 = np.uint64
 POLYGON, CIRCLE, CAPSULE, SEGMENT, CHAIN_SEGMENT = 0, 1, 2, 3, 4
@@ -47,7 +46,7 @@ FIXTURE_FIELDS = {
     "aabb": ((4,), f8),        # min x, min y, max x, max y (fattened by the body's margin)
     "id": ((), i8),            # stable id (handle)
 }
-Fixtures = namedtuple("Fixtures", list(FIXTURE_FIELDS))
+Fixtures = view_class("Fixtures", FIXTURE_FIELDS, "fixtures")
 
 
 class FixtureTable(Table):

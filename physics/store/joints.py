@@ -28,11 +28,10 @@ mouse      lb (the target, a world point), hertz + zeta, max_motor (force)
 """
 from __future__ import annotations
 
-from collections import namedtuple
-
 import numpy as np
 
 from .table import Table, f8, i1, i4, i8
+from .table_view import view_class
 
 REVOLUTE, PRISMATIC, WELD, DISTANCE, WHEEL, MOTOR, MOUSE = range(7)
 JOINT_KINDS = ("revolute", "prismatic", "weld", "distance", "wheel", "motor", "mouse")
@@ -70,7 +69,7 @@ JOINT_FIELDS = {
     "torque": ((), f8),        # reaction torque on a about its anchor in the last step (N m)
     "id": ((), i8),
 }
-Joints = namedtuple("Joints", list(JOINT_FIELDS))
+Joints = view_class("Joints", JOINT_FIELDS, "joints")
 
 
 class JointTable(Table):

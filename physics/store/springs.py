@@ -1,9 +1,8 @@
 """The spring table: damped springs between two bodies or a body and a world point."""
 from __future__ import annotations
 
-from collections import namedtuple
-
 from .table import f8, i4, i8
+from .table_view import view_class
 
 SPRING_FIELDS = {
     "a": ((), i4),          # body slot
@@ -15,4 +14,4 @@ SPRING_FIELDS = {
     "rest": ((), f8),       # rest length m
     "id": ((), i8),
 }
-Springs = namedtuple("Springs", list(SPRING_FIELDS))
+Springs = view_class("Springs", SPRING_FIELDS, "springs")

@@ -7,11 +7,10 @@ every step by the geometry stage.
 """
 from __future__ import annotations
 
-from collections import namedtuple
-
 import numpy as np
 
 from .table import allocate, f8, grown
+from .table_view import view_class
 
 VERT_FIELDS = {
     "local": ((2,), f8),    # vertex relative to the centre of mass, CCW order
@@ -19,7 +18,7 @@ VERT_FIELDS = {
     "world": ((2,), f8),    # vertex in world coordinates (refreshed each step)
     "wnormal": ((2,), f8),  # edge normal in world coordinates
 }
-Verts = namedtuple("Verts", list(VERT_FIELDS))
+Verts = view_class("Verts", VERT_FIELDS, "verts")
 
 
 class VertexPool:
