@@ -5,15 +5,14 @@ import numba
 import numpy as np
 import pytest
 
-from physics.store import Store
-from physics.store import flat
+from physics.store import Store, flat
 from physics.store.bodies import Bodies
 from physics.store.contacts import Contacts
 from physics.store.fixtures import Fixtures
 from physics.store.joints import Joints
+from physics.store.make_flat import main as make_flat
 from physics.store.springs import Springs
 from physics.store.vertices import Verts
-from physics.store.make_flat import main as make_flat
 
 
 def tables():
