@@ -57,16 +57,31 @@ class StatsSampler:
         self.stats = Stats()
         self.info: dict = {}
         self.last_contacts = (0, 0.0)    # (count, deepest penetration in m)
+        self.steps = 0                   # world.steps when the counts were read
 
     def sample(self, world, phys_ms: float, steps: int, frame_no: int) -> None:
         if frame_no % 6 == 0 or not self.stats.n:
             d = world.contact_depths()     # numpy: no Python object per contact
             self.last_contacts = (len(d), deepest(d))
             self.info = world.info()
+            self.steps = world.steps
         p = world.linear_momentum()
         self.stats.add(t=time.monotonic(), step_ms=phys_ms / max(steps, 1), ke=world.kinetic_energy(),
                        pe=world.potential_energy(), p=math.hypot(*p), pen=max(0.0, self.last_contacts[1]),
                        contacts=self.last_contacts[0])
+
+    def counts(self) -> dict:
+        """The counts the stats window shows, from the last read.  The core tests no pair of two
+        sleeping bodies (nor a sleeping body against a static one), so ``touching`` (as
+        ``len(world.contacts())``) and ``pairs`` (the narrow phase's rows, ``world.info()['contacts']``,
+        touching or a speculative margin apart) count only pairs with an awake body.  While every
+        body sleeps no step runs, and both hold the last step's figures."""
+        info = self.info
+        dynamic, awake = info.get("dynamic", 0), info.get("awake", 0)
+        return {"bodies": info.get("bodies", 0), "awake": awake, "asleep": dynamic - awake,
+                "springs": info.get("springs", 0), "touching": self.last_contacts[0],
+                "pairs": info.get("contacts", 0), "steps": self.steps,
+                "all_asleep": bool(info.get("sleeping")) and dynamic > 0 and awake == 0}
 
     def clear(self):
         self.stats.clear()

@@ -17,6 +17,19 @@ def stats_default_rect(width, height):
     return (PANEL_W + 16.0, height - 8.0 - STATS_H, width - 8.0, height - 8.0)
 
 
+COUNTS_HELP = ("The core tests no pair of two sleeping bodies (nor a sleeping body against a static one),\n"
+              "so contacts between sleeping bodies are not counted.\n"
+              "touching: world.contacts(); pairs tested: the narrow phase's pairs (world.info()['contacts']),\n"
+              "touching or a speculative margin apart.")
+
+
+def counts_text(c):
+    """The counts line for ``StatsSampler.counts()``."""
+    text = (f"bodies {c['bodies']}  awake {c['awake']}  asleep {c['asleep']}  springs {c['springs']}   "
+            f"awake contacts: {c['touching']} touching, {c['pairs']} pairs tested")
+    return text + ("  (all asleep: the last step's)" if c["all_asleep"] else "")
+
+
 class StatsWindow:
     """``plots`` hold what each drew last (rectangles, ticks, hover readout) for the status file."""
 
@@ -24,7 +37,7 @@ class StatsWindow:
               ("energy (J)", "J", (("KE", "ke"), ("PE", "pe"), ("total", None))),
               ("momentum (kg m/s)", "kg m/s", (("|p|", "p"),)),
               ("max penetration (m)", "m", (("depth", "pen"),)),
-              ("contacts", "", (("contacts", "contacts"),)))
+              ("awake contacts", "", (("touching", "contacts"),)))
 
     def __init__(self, app):
         self.app = app
@@ -73,16 +86,25 @@ class StatsWindow:
                 imgui.end_tab_item()
         imgui.end_tab_bar()
 
+    def counts(self):
+        """The body and contact counts on a line of their own, saying that the contacts are
+        those of awake bodies (a pile of sleeping boxes has none); hovered, why."""
+        c = self.app.sampler.counts()
+        text = counts_text(c)
+        imgui.text_colored(DIM, text)
+        record(self.app, "stats:counts")
+        if imgui.is_item_hovered():
+            imgui.set_tooltip(COUNTS_HELP)
+        self.app.ui_values["stats:counts"] = dict(c, text=text)
+
     def contents(self):
         app = self.app
         ft = app.times.avg
-        info = app.sampler.info
         imgui.text(f"{app.times.fps:5.1f} fps   frame {ft['frame']:.2f} ms")
         imgui.same_line()
         imgui.text_colored(DIM, f"  physics {ft['physics']:.2f}  upload {ft['upload']:.2f}  "
-                                f"draw {ft['draw']:.2f}  ui {ft['ui']:.2f} ms   "
-                                f"bodies {info.get('bodies', 0)}  awake {info.get('awake', 0)}  "
-                                f"springs {info.get('springs', 0)}  pairs {info.get('contacts', 0)}")
+                                f"draw {ft['draw']:.2f}  ui {ft['ui']:.2f} ms")
+        self.counts()
         self.contacts.draw()
         s = app.sampler.stats
         t, n = s.arrays()
