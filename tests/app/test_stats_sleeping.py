@@ -48,11 +48,12 @@ def replayed(path, steps):
 
 def test_counts_say_awake_and_match_the_api(launch, tmp_path):
     path = scene(tmp_path / "sleeping.json")
-    app = launch(path)
-    app.wait_ready(10)
-    app.wait(lambda s: s["running"] and s["time"] > 1.0, 120, "a second of play")
+    app = launch(path, "--paused")      # played here for a second: the balls stay on the ground
+    app.wait_ready(10, joints=False)
     app.xdo("mousemove", 700, 150)
     app.settle()
+    app.key("space")
+    app.wait(lambda s: s["running"] and s["time"] > 1.0, 60, "a second of play")
     app.key("space")
     app.wait(lambda s: not s["running"], 10, "paused")
     # the counts are read every sixth frame: wait for a read of the paused step
