@@ -21,6 +21,7 @@ import math
 import numpy as np
 
 from ..._jit import kernel
+from ..argsort import argsort_into
 from .filter import can_pair, overlap, push
 from .order import sort_pairs
 
@@ -78,9 +79,7 @@ def _repair_order(order, key, n, fresh):
                 fresh = True
                 break
     if fresh:
-        idx = np.argsort(key[:n], kind="mergesort")
-        for s in range(n):
-            order[s] = idx[s]
+        argsort_into(key, n, order, np.empty(n, np.int64))
 
 
 @kernel

@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from ..._jit import kernel
+from ..argsort import argsort_into
 from ...geometry.shapes import MAX_POLYGON_VERTICES
 from ...store.fixtures import CHAIN_SEGMENT, CIRCLE, POLYGON
 from ...store.flat import bodies_view, contacts_view, fixtures_view, verts_view
@@ -218,7 +219,8 @@ def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev, full=None):
     is ``_rows``.
     """
     keys = pair_keys(F, pairs, npairs)
-    order = np.argsort(keys)
+    order = np.empty(npairs, np.int64)
+    argsort_into(keys, npairs, order, np.empty(npairs, np.int64))
     return collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, manifold_scratch())
 
 
@@ -227,10 +229,10 @@ def sort_pairs(fid, pairs, npairs, keys, order):
     """The pairs' keys (``pair_keys``; ``fid``: the fixtures' ids) into ``keys`` and their
     ascending order into ``order``, both at least ``npairs`` long, without allocating for a small
     world: an insertion sort up to 32 pairs (the keys are distinct, so any sort gives this
-    order), numpy's beyond."""
+    order), a merge sort beyond."""
     pair_keys_into(fid, pairs, npairs, keys)
     if npairs > 32:
-        order[:npairs] = np.argsort(keys[:npairs])
+        argsort_into(keys, npairs, order, np.empty(npairs, np.int64))
         return
     for k in range(npairs):
         j = k

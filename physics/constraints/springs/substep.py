@@ -168,9 +168,11 @@ def solve_springs(B, S, ns, h):
     for k in range(ns):
         if kind[k] != IMPLICIT:
             continue
-        if nr != k:
-            rows[nr] = rows[k]
-            bod[nr] = bod[k]
+        if nr != k:  # element by element: an array assignment brings numba's shape-error code along
+            for f in range(rows.shape[1]):
+                rows[nr, f] = rows[k, f]
+            bod[nr, 0] = bod[k, 0]
+            bod[nr, 1] = bod[k, 1]
         g = 1.0 / (h * (S.c[k] + h * S.k[k]))
         gam[nr] = g
         rows[nr, DIAG] = kinv[k] + g
