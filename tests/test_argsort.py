@@ -23,7 +23,7 @@ def _order(key):
 @pytest.mark.parametrize("seed", range(4))
 def test_merge_argsort_is_numpys_stable_order(seed):
     rng = np.random.default_rng(seed)
-    for n in list(range(0, 70)) + [255, 256, 257, 1000]:
+    for n in list(range(70)) + [255, 256, 257, 1000]:
         ties = rng.integers(0, max(n // 4, 1), n).astype(np.float64)
         spread = rng.normal(size=n)
         if n:

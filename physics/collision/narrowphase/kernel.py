@@ -17,15 +17,15 @@ import math
 import numpy as np
 
 from ..._jit import kernel
-from ..argsort import argsort_into
 from ...geometry.shapes import MAX_POLYGON_VERTICES
 from ...store.fixtures import CHAIN_SEGMENT, CIRCLE, POLYGON
 from ...store.flat import bodies_view, contacts_view, fixtures_view, verts_view
+from ..argsort import argsort_into
+from .carry import carry_over, seek
 from .chain import chain_circle, chain_polygon
 from .circles import circle_circle, polygon_circle
 from .pair import polygon_pair, sat_pair
 from .rounded import round_pair
-from .carry import carry_over, seek
 
 BIAS = 1e-3          # reference-face hysteresis, relative to the smaller body
 
