@@ -114,14 +114,20 @@ def _dtype(dt) -> types.Type:
     return types.uint64 if dt == np.uint64 else types.int64
 
 
+def own(spec_entry) -> bool:
+    """Whether a field is an array of its own: two or more dimensions per entry, or declared so
+    (a third item "own": scratch with a row count of its own, e.g. per body in a joint table)."""
+    return separate(spec_entry[0]) or spec_entry[2:] == ("own",)
+
+
 def column_fields(spec: dict) -> tuple:
     """The ``fields`` of a table laid out as store/table.py's Columns: the float columns in ``F``,
-    the integer columns in ``I``, each field of two or more dimensions per entry a source of its
-    own; sources numbered in that order, counting only those the table has (``sources_of``)."""
-    kinds = [("X" if separate(shp) else "F" if np.dtype(dt).kind == "f" else "I") for shp, dt in spec.values()]
+    the integer columns in ``I``, each field of its own (``own``) a source of its own; sources
+    numbered in that order, counting only those the table has (``sources_of``)."""
+    kinds = [("X" if own(e) else "F" if np.dtype(e[1]).kind == "f" else "I") for e in spec.values()]
     order = [k for k in ("F", "I") if k in kinds]
     out, col, extra = [], {"F": 0, "I": 0}, len(order)
-    for (name, (shape, dt)), k in zip(spec.items(), kinds):
+    for (name, (shape, dt, *_)), k in zip(spec.items(), kinds):
         if k == "X":
             out.append((name, extra, WHOLE, 0, _dtype(dt)))
             extra += 1

@@ -38,6 +38,10 @@ class TableView:
         self._sources = sources
         self._numba_type = TableType(self._tag, layout, tuple(typeof(a) for a in sources))
 
+    def _replace(self, **fields):
+        """A view with some fields replaced (as a namedtuple's ``_replace``)."""
+        return type(self)(**{k: fields.get(k, getattr(self, k)) for k in self._fields})
+
     def __iter__(self):
         return (getattr(self, k) for k in self._fields)
 

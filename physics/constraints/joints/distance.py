@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from .jit import row_inline
+from .jit import row_inline, row_part
 from ...store.joints import EQ0, EQ1, EQ2, LOWER, MOTOR_ROW, SPRING, UPPER
 from ..body_rows import II, IM
 from .frame import arms, cross
@@ -25,7 +25,7 @@ def is_rod(J, j):
     return J.hertz[j] <= 0.0 and math.isnan(J.lower[j]) and math.isnan(J.upper[j])
 
 
-@row_inline
+@row_part
 def prepare_distance(J, JW, j, h):
     if is_rod(J, j):
         rigid_row(JW, j, 0)
@@ -41,7 +41,7 @@ def prepare_distance(J, JW, j, h):
     return mask
 
 
-@row_inline
+@row_part
 def rows_distance(B, J, JW, j, a, b):
     ims = JW.SB[a, IM] + JW.SB[b, IM]
     iia = JW.SB[a, II]

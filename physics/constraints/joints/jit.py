@@ -21,6 +21,15 @@ def row_inline(fn):
     return kernel(fn, inline="always")
 
 
+def row_part(fn):
+    """``@row_part``: a joint-level step of a verb (one kind's row builder or preparation, the
+    free rows' or the equality block's solve), compiled once as a function of its own and called
+    once per joint.  Inlining these into every verb typed and optimised each kind's code once per
+    verb; over the compact tables (store/table_type.py) a call passes a few array structs, so
+    compiling each once costs the step little.  The small helpers inside stay ``row_inline``."""
+    return kernel(fn)
+
+
 def row_entry(fn):
     """``@row_entry``: ``@row_kernel`` that Python calls too (physics/_jit.py: ``entry``)."""
     return kernel(fn, entry=True)

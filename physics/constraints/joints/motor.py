@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from .jit import row_inline
+from .jit import row_inline, row_part
 from ...store.joints import EQ2, ROWS
 from ..body_rows import II, IM
 from .frame import relative_angle
@@ -23,14 +23,14 @@ from .rows import apply_row, block_entry, clear_row, row_speed, set_row, solve_s
 CORRECTION = 0.3  # Box2D's default correction factor
 
 
-@row_inline
+@row_part
 def prepare_motor(J, JW, j, h):
     JW.F[j, MAX_MOTOR] = J.max_motor[j] * h
     JW.F[j, MAX_TORQUE] = J.max_torque[j] * h
     return 0
 
 
-@row_inline
+@row_part
 def rows_motor(B, J, JW, j, a, b):
     ims = JW.SB[a, IM] + JW.SB[b, IM]
     iia = JW.SB[a, II]
@@ -51,7 +51,7 @@ def clamp_disc(x, y, top):
     return x, y
 
 
-@row_inline
+@row_part
 def solve_motor_joint(J, JW, j, a, b, inv_h):
     bias = CORRECTION * inv_h
     # angular

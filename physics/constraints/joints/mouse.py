@@ -7,7 +7,7 @@ target moves ``lb``; the sandbox drags bodies with it.
 """
 from __future__ import annotations
 
-from .jit import row_inline
+from .jit import row_part
 from ...store.joints import EQ1, ROWS
 from ..body_rows import II, IM
 from .layout import CC, MASS, MAX_MOTOR, SOFT_SPRING
@@ -17,14 +17,14 @@ from .rows import apply_row, block_entry, clear_row, row_speed, solve_sym
 from .soft_rows import spring_softness
 
 
-@row_inline
+@row_part
 def prepare_mouse(J, JW, j, h):
     spring_softness(JW, j, J.hertz[j], J.zeta[j], h)
     JW.F[j, MAX_MOTOR] = J.max_motor[j] * h
     return 0
 
 
-@row_inline
+@row_part
 def rows_mouse(B, J, JW, j, a, b):
     ims = JW.SB[a, IM] + JW.SB[b, IM]
     point_rows(JW, j, a, b, ims, JW.SB[a, II], JW.SB[b, II])
@@ -32,7 +32,7 @@ def rows_mouse(B, J, JW, j, a, b):
         clear_row(JW, j, r)
 
 
-@row_inline
+@row_part
 def solve_mouse(J, JW, j, a, b):
     rate = JW.F[j, SOFT_SPRING]
     ms = JW.F[j, SOFT_SPRING + 1]

@@ -11,7 +11,7 @@ violated) take ``beta`` of their error per pass.  Springs are left alone.
 """
 from __future__ import annotations
 
-from .jit import row_inline, row_kernel
+from .jit import row_inline, row_part, row_kernel
 from ...store.joints import LOWER, MOTOR, MOUSE, UPPER
 from .dispatch import equality_rows_of, joint_rows
 from .layout import CC, MASS, SOFT_EQ
@@ -29,7 +29,7 @@ def rigid_error(JW, j, r, m):
     return capped_error(JW, j, r, JW.G[j, r, CC])
 
 
-@row_inline
+@row_part
 def correct_equality(B, J, JW, j, a, b, m, beta):
     """The joint's rigid equality rows as one block at the position level."""
     g0 = rigid_error(JW, j, 0, m)
@@ -51,7 +51,7 @@ def correct_equality(B, J, JW, j, a, b, m, beta):
             shift_row(B, JW, a, b, j, r, -beta * x)
 
 
-@row_inline
+@row_part
 def correct_limit(B, JW, a, b, j, r, beta):
     c = JW.G[j, r, CC]
     if c < 0.0:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from .jit import row_inline
+from .jit import row_inline, row_part
 from ...store.joints import EQ0, EQ1, EQ2, LOWER, MOTOR_ROW, SPRING, UPPER
 from ..body_rows import II, IM
 from .frame import arms, axis, cross, relative_angle
@@ -32,7 +32,7 @@ def axial_prepare(J, JW, j, h, mask):
     return mask
 
 
-@row_inline
+@row_part
 def prepare_prismatic(J, JW, j, h):
     rigid_row(JW, j, 0)
     rigid_row(JW, j, 1)
@@ -65,7 +65,7 @@ def slide_rows(J, JW, j, a, b, ims, iia, iib, with_motor):
     set_row(JW, j, UPPER, -ux, -uy, -ka, -kb, 0.0 if math.isnan(hi) else hi - t, ims, iia, iib)
 
 
-@row_inline
+@row_part
 def rows_prismatic(B, J, JW, j, a, b):
     ims = JW.SB[a, IM] + JW.SB[b, IM]
     iia = JW.SB[a, II]

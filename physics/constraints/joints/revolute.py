@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from .jit import row_inline
+from .jit import row_inline, row_part
 from ...store.joints import EQ0, EQ1, EQ2, LOWER, MOTOR_ROW, SPRING, UPPER
 from ..body_rows import II, IM
 from .frame import arms, relative_angle
@@ -17,7 +17,7 @@ from .rows import clear_row, set_row
 from .soft_rows import rigid_row, spring_softness
 
 
-@row_inline
+@row_part
 def prepare_revolute(J, JW, j, h):
     """Softness and clamps for one step; returns the row mask."""
     rigid_row(JW, j, 0)
@@ -56,7 +56,7 @@ def point_rows(JW, j, a, b, ims, iia, iib):
     set_row(JW, j, EQ1, 0.0, 1.0, rax, rbx, dy, ims, iia, iib)
 
 
-@row_inline
+@row_part
 def rows_revolute(B, J, JW, j, a, b):
     ims = JW.SB[a, IM] + JW.SB[b, IM]
     iia = JW.SB[a, II]

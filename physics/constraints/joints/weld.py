@@ -6,7 +6,7 @@ angle.  ``hertz`` softens the point rows, ``hertz2`` the angle row (0 = rigid),
 """
 from __future__ import annotations
 
-from .jit import row_inline
+from .jit import row_part
 from ...store.joints import EQ0, EQ1, EQ2, ROWS
 from ..body_rows import II, IM
 from .frame import relative_angle
@@ -15,7 +15,7 @@ from .rows import clear_row, set_row
 from .soft_rows import spring_row
 
 
-@row_inline
+@row_part
 def prepare_weld(J, JW, j, h):
     spring_row(JW, j, 0, J.hertz[j], J.zeta[j], h)
     spring_row(JW, j, 1, J.hertz[j], J.zeta[j], h)
@@ -23,7 +23,7 @@ def prepare_weld(J, JW, j, h):
     return (1 << EQ0) | (1 << EQ1) | (1 << EQ2)
 
 
-@row_inline
+@row_part
 def rows_weld(B, J, JW, j, a, b):
     ims = JW.SB[a, IM] + JW.SB[b, IM]
     iia = JW.SB[a, II]

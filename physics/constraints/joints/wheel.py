@@ -7,7 +7,7 @@ relative to b's as everywhere here).
 """
 from __future__ import annotations
 
-from .jit import row_inline
+from .jit import row_part
 from ...store.joints import EQ0, EQ1, EQ2, MOTOR_ROW
 from ..body_rows import II, IM
 from .layout import MAX_MOTOR
@@ -16,7 +16,7 @@ from .rows import clear_row, set_row
 from .soft_rows import rigid_row
 
 
-@row_inline
+@row_part
 def prepare_wheel(J, JW, j, h):
     rigid_row(JW, j, 0)
     mask = axial_prepare(J, JW, j, h, 1 << EQ0)
@@ -26,7 +26,7 @@ def prepare_wheel(J, JW, j, h):
     return mask
 
 
-@row_inline
+@row_part
 def rows_wheel(B, J, JW, j, a, b):
     ims = JW.SB[a, IM] + JW.SB[b, IM]
     iia = JW.SB[a, II]

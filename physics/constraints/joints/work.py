@@ -11,23 +11,29 @@ kinds of the joined bodies changed.
 """
 from __future__ import annotations
 
-from collections import namedtuple
-
 import numpy as np
 
 from ...store.joints import BROKEN, COLLIDE, ROWS
+from ...store.table import allocate
+from ...store.table_view import view_class
 from ..body_rows import NB
 from .kinds import kinds_changed
 from .layout import NF, NG
 from .system.topology import build, empty_system
 
-JointScratch = namedtuple("JointScratch", "ab F G on mask seq X0 Q0 SB")
+#: per joint (the table's rows), then per body (arrays of their own: one row per body)
+PER_JOINT = {"ab": ((2,), np.int64), "F": ((NF,), np.float64), "G": ((ROWS, NG), np.float64),
+             "on": ((), np.int64), "mask": ((), np.int64), "seq": ((), np.int64)}
+PER_BODY = {"X0": ((2,), np.float64), "Q0": ((), np.float64), "SB": ((NB,), np.float64)}
+JointScratch = view_class("JointScratch", {**PER_JOINT, **{k: (*e, "own") for k, e in PER_BODY.items()}},
+                          "joint_scratch")
 
 
 def _scratch(jcap, bcap):
-    return JointScratch(ab=np.zeros((jcap, 2), np.int64), F=np.zeros((jcap, NF)), G=np.zeros((jcap, ROWS, NG)),
-                        on=np.zeros(jcap, np.int8), mask=np.zeros(jcap, np.int64), seq=np.zeros(jcap, np.int8),
-                        X0=np.zeros((bcap, 2)), Q0=np.zeros(bcap), SB=np.zeros((bcap, NB)))
+    """Zeroed scratch for ``jcap`` joints and ``bcap`` body rows: compiled code receives the
+    per-joint columns as two arrays (store/table_view.py)."""
+    per_body = {k: np.zeros((bcap,) + shp, dt) for k, (shp, dt) in PER_BODY.items()}
+    return JointScratch(**allocate(PER_JOINT, jcap), **per_body)
 
 
 class JointWork:
