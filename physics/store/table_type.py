@@ -21,6 +21,8 @@ and lowering, typeof and unbox).
 """
 from __future__ import annotations
 
+import zlib
+
 import numpy as np
 from numba import types
 from numba.core import cgutils
@@ -49,11 +51,18 @@ class TableType(types.Type):
         self.fields = fields
         self.sources = sources
         self.by_name = {f[0]: f for f in fields}
+        # numba hashes an argument's type on every call from Python; the key nests some thirty
+        # types, so its hash is computed once, from its text (the same in every process: the
+        # hash travels with the type into numba's disk cache)
+        self._hash = zlib.crc32(repr((tag, fields, sources)).encode())
         super().__init__(name=f"{tag}Table({', '.join(map(str, sources))})")
 
     @property
     def key(self):
         return self.tag, self.fields, self.sources
+
+    def __hash__(self):
+        return self._hash
 
     def field_type(self, name: str):
         _, src, col, width, dt = self.by_name[name]
