@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .._jit import kernel
 
 
@@ -51,7 +53,7 @@ def argsort_into(key, n, order, tmp):
     for i in range(n):
         order[i] = i
     in_tmp = False
-    width = 1
+    width = np.int64(1)  # not a literal 1: _merge_pass compiles once, not once more for it
     while width < n:
         if in_tmp:
             _merge_pass(key, tmp, order, n, width)

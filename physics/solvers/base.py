@@ -20,6 +20,9 @@ class SolverMode:
     settings: dict[str, Setting] = {}
     #: extra fields of the parameter record: (name, dtype) or (name, dtype, shape)
     derived: tuple = ()
+    #: the settings fields of the parameter record, when modes share one record type (a union of
+    #: their settings; the fields a mode lacks keep their defaults); None: ``settings``
+    record: dict | None = None
     #: the world's integrator setting applies to this mode
     uses_integrator: bool = False
 

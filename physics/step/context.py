@@ -90,9 +90,13 @@ class ModeParams(Record):
     version last loaded (see physics/settings.py ModeValues).
     """
 
-    def __init__(self, settings: dict, derived=()):
+    def __init__(self, settings: dict, derived=(), record: dict | None = None):
         self._settings = settings
-        super().__init__([(name, setting_dtype(s)) for name, s in settings.items()] + list(derived))
+        record = settings if record is None else record
+        super().__init__([(name, setting_dtype(s)) for name, s in record.items()] + list(derived))
+        for name, s in record.items():  # a shared record's fields this mode lacks: their defaults
+            if name not in settings:
+                self.set(name, s.choices.index(s.default) if s.type is str else s.default)
         self.version = -1
         self.values: dict = {}  # the settings as given (choices as strings), for derive()
         self.push_speed = 0.0  # the mode's push-out speed cap with these settings (Pipeline.params)

@@ -101,7 +101,7 @@ class Pipeline:
         mode = world._mode
         par = self._params.get(mode.name)
         if par is None:
-            par = self._params[mode.name] = ModeParams(mode.settings, mode.derived)
+            par = self._params[mode.name] = ModeParams(mode.settings, mode.derived, mode.record)
         vals = world._settings_store(mode.name)
         if par.version != vals.version:
             par.load(vals.values, vals.version)

@@ -21,7 +21,13 @@ from ..collision.broadphase.fixture_filter import filter_pairs
 from ..collision.narrowphase.kernel import collide_with, sort_pairs
 from ..constraints.joints.kinds import kinds_changed
 from ..solvers.soft_step.kernel import soft_step
-from ..store.flat import bodies_view, contacts_view, fixtures_view, springs_view, verts_view
+from ..store.flat import (
+    bodies_view,
+    contacts_view,
+    fixtures_view,
+    springs_view,
+    verts_view,
+)
 from ..store.optional import optional_joints
 from .clock import cycles
 from .energy_bound import ACTIVE, guard_begin, guard_excess
@@ -49,7 +55,7 @@ T_SLOTS = 7
 def _motors(JF, JI, BF, BI, nj):
     """(power bound, dragged) of the joints' motors (energy_sums.motor_power); none without."""
     if JF is None:
-        return 0.0, False
+        return 0.0, np.bool_(False)  # a literal False would compile guard_begin twice
     return motor_power(JF, JI, BF, BI, nj)
 
 

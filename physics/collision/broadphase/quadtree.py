@@ -120,7 +120,7 @@ def build(B, n, reg, info, items, box, tmp, emit):
     info[0, DEPTH] = 0
     nodes = 1
     top = m
-    k = 0
+    k = np.int64(0)  # not a literal: push compiles once
     node = 0
     while node < nodes:  # breadth first: children are appended behind
         s = info[node, START]

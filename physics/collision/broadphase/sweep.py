@@ -155,7 +155,7 @@ def _sweep_bands(B, nb, axis, b0, bstart, ent, tmp):
     aabb = B.aabb
     kind = B.kind
     awake = B.awake
-    k = 0
+    k = np.int64(0)  # not a literal: push compiles once
     for b in range(nb):
         end = bstart[b + 1]
         for a in range(bstart[b], end):

@@ -48,7 +48,7 @@ def gjk(va, vb, sw, si, lam):
     if dx == 0.0 and dy == 0.0:
         dx = 1.0
     _add_support(va, vb, sw, si, 0, dx, dy)
-    count = 1
+    count = np.int64(1)  # not a literal: reduce_simplex compiles once (simplex.py: _slots)
     vx = sw[0, 0]
     vy = sw[0, 1]
     for _ in range(MAX_ITERS):

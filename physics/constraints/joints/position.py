@@ -11,9 +11,11 @@ violated) take ``beta`` of their error per pass.  Springs are left alone.
 """
 from __future__ import annotations
 
-from .jit import row_inline, row_part, row_kernel
+import numpy as np
+
 from ...store.joints import LOWER, MOTOR, MOUSE, UPPER
 from .dispatch import equality_rows_of, joint_rows
+from .jit import row_inline, row_kernel, row_part
 from .layout import CC, MASS, SOFT_EQ
 from .rows import block_entry, solve_sym
 from .shift import capped_error, shift_row
@@ -77,8 +79,8 @@ def correct_joint_positions(c, B, J, JW, JS, eq_global, beta, iterations):
             if m > 0 and (not eq_global or JW.seq[j]):
                 correct_equality(B, J, JW, j, a, b, m, beta)
             if mask & (1 << LOWER):
-                correct_limit(B, JW, a, b, j, LOWER, beta)
+                correct_limit(B, JW, a, b, j, np.int64(LOWER), beta)
             if mask & (1 << UPPER):
-                correct_limit(B, JW, a, b, j, UPPER, beta)
+                correct_limit(B, JW, a, b, j, np.int64(UPPER), beta)
         if eq_global and JS.dims[0] > 0:
             correct_system(B, JW, JS, 1.0)

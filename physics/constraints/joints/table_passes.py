@@ -13,9 +13,11 @@ so each pass copies the velocities from the table into the rows and back
 """
 from __future__ import annotations
 
-from .jit import row_kernel
+import numpy as np
+
 from ..body_rows import II, IM, VX, VY, W, gather_bodies
 from .dispatch import solve_joints, warm_start_joints
+from .jit import row_kernel
 from .prepare import prepare_joints, zero_joint_impulses
 from .sync import displacement_from_table, rows_from_table, save_start, table_from_rows
 
@@ -37,7 +39,7 @@ def begin_table_joints(c, B, J, JW, h, warm_starting):
 def table_joint_pass(c, B, J, JW, JS, inv_h, eq_global):
     """One velocity pass over the joints, the table's velocities in and out."""
     rows_from_table(B, c.n, JW.SB)
-    solve_joints(c, B, J, JW, JS, False, inv_h, eq_global)
+    solve_joints(c, B, J, JW, JS, np.bool_(False), inv_h, eq_global)
     table_from_rows(B, c.n, JW.SB)
 
 
@@ -62,7 +64,7 @@ def classic_joint_substep(c, B, J, JW, JS, h, iterations, eq_global):
     warm_start_joints(c, B, J, JW)
     inv_h = 1.0 / h
     for _ in range(iterations):
-        solve_joints(c, B, J, JW, JS, False, inv_h, eq_global)
+        solve_joints(c, B, J, JW, JS, np.bool_(False), inv_h, eq_global)
     table_from_rows(B, n, SB)
     for i in range(n):
         if SB[i, IM] != 0.0 or SB[i, II] != 0.0:

@@ -30,7 +30,20 @@ from ..._jit import kernel
 from ..point import cross
 from . import geometric as geo
 from .geometry import anchor, movable
-from .implicit import DIAG, JAW, JAX, JAY, JBW, JBX, JBY, RHS, ROW_FIELDS, apply_system, row_speed, solve_system
+from .implicit import (
+    DIAG,
+    JAW,
+    JAX,
+    JAY,
+    JBW,
+    JBX,
+    JBY,
+    RHS,
+    ROW_FIELDS,
+    apply_system,
+    row_speed,
+    solve_system,
+)
 
 # explicit while h^2 sum k K (and h sum c K) at the spring's bodies stays below this
 # (symplectic Euler is stable to 4: a 16x margin keeps the explicit springs accurate)
@@ -164,7 +177,7 @@ def solve_springs(B, S, ns, h):
             _push(B, rows, bod, k, -h * (S.k[k] * G[k, geo.STRETCH] + S.c[k] * cdot))
     # the implicit rows together, from the velocities the explicit ones left: the stiff axes
     # first (compacted to the front), then the stiff geometric modes
-    nr = 0
+    nr = np.int64(0)  # not a literal 0: the row kernels compile once, not once more for it
     for k in range(ns):
         if kind[k] != IMPLICIT:
             continue

@@ -14,14 +14,14 @@ import math
 
 import numpy as np
 
+from ...constraints.joints.work import after_step, joint_args
 from ...constraints.springs.force import spring_rate
 from ...errors import SimulationError
 from ...options import INTEGRATORS
-from ...constraints.joints.work import after_step, joint_args
-from ...settings import Setting
+from ...settings import Setting, declare
 from ..base import SolverMode
-from .contact_geometry import classic_points
 from ..joint_settings import joint_position_setting, joint_solver_setting
+from .contact_geometry import classic_points
 from .integrators import LIMITS, allocate_work, substeps_for
 from .penalty_load import stable_load
 
@@ -86,8 +86,20 @@ PENALTY_SETTINGS = (
 )
 
 
+IMPACT_SPEED = Setting("impact_speed", -1.0, -1.0, 100.0,
+                       "approach speed (m/s) above which a contact is an impact (impulse), below which it is "
+                       "resting (penalty); -1: 3 |g| dt")
+RESTITUTION_THRESHOLD = Setting("restitution_threshold", -1.0, -1.0, 100.0,
+                                "impacts slower than this (m/s) do not bounce; -1: 3 |g| dt (a resting box "
+                                "gains |g| dt per step and must not hop)")
+#: the fields of every classic mode's parameter record: each mode's settings are a part of it, so
+#: the three modes' records are one numba type and the kernels they share compile once
+RECORD = declare(IMPACT_SPEED, RESTITUTION_THRESHOLD, *IMPULSE_SETTINGS, *PENALTY_SETTINGS, *COMMON)
+
+
 class SeedMode(SolverMode):
     uses_integrator = True
+    record = RECORD
     # sub-steps of the force integration, the impact / restitution speed threshold, the
     # position share of the impulses (impulses.position_share), the projection (code in
     # PROJECTIONS) and the penalty parameters [on, omega, zeta, stick_speed, push_out_speed, load limit]

@@ -12,8 +12,15 @@ impulse.impulse_step with ``hybrid`` set.
 """
 from __future__ import annotations
 
-from ...settings import Setting, declare
-from .common import COMMON, IMPULSE_SETTINGS, PENALTY_SETTINGS, contact_rate, penalty_params
+from ...settings import declare
+from .common import (
+    COMMON,
+    IMPACT_SPEED,
+    IMPULSE_SETTINGS,
+    PENALTY_SETTINGS,
+    contact_rate,
+    penalty_params,
+)
 from .impulse import ImpulseMode
 
 
@@ -22,10 +29,7 @@ class HybridMode(ImpulseMode):
     description = ("Impulses (with projection) for impacts, penalty springs for contacts slower than "
                    "an adaptive threshold (seed 6.2.2).")
     settings = declare(
-        Setting("impact_speed", -1.0, -1.0, 100.0,
-                "approach speed (m/s) above which a contact is an impact (impulse), below which it is "
-                "resting (penalty); -1: 3 |g| dt"),
-        *IMPULSE_SETTINGS, *PENALTY_SETTINGS, *COMMON,
+        IMPACT_SPEED, *IMPULSE_SETTINGS, *PENALTY_SETTINGS, *COMMON,
     )
     threshold_setting = "impact_speed"
     hybrid = True

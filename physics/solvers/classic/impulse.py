@@ -16,11 +16,20 @@ from __future__ import annotations
 
 from ..._jit import kernel
 from ...constraints.point import prepare_points
-from ...settings import Setting, declare
+from ...settings import declare
 from ...store.flat import bodies_view, contacts_view, springs_view
 from ...store.optional import optional_joints
 from .classic_joints import begin_classic_joints, end_classic_joints
-from .common import COMMON, IMPULSE_SETTINGS, NO_PENALTY, PROJECTIONS, SeedMode, auto_speed, share_factor
+from .common import (
+    COMMON,
+    IMPULSE_SETTINGS,
+    NO_PENALTY,
+    PROJECTIONS,
+    RESTITUTION_THRESHOLD,
+    SeedMode,
+    auto_speed,
+    share_factor,
+)
 from .contact_geometry import classify
 from .impulses import activate_impulses, position_share, save_velocities, solve_impulses
 from .integrators import advance, save_start
@@ -72,11 +81,7 @@ class ImpulseMode(SeedMode):
     description = ("The seed's impulse response: eq. 15 impulses with restitution and Coulomb friction "
                    "after the force integration, then linear or non-linear projection.")
     settings = declare(
-        *IMPULSE_SETTINGS,
-        Setting("restitution_threshold", -1.0, -1.0, 100.0,
-                "impacts slower than this (m/s) do not bounce; -1: 3 |g| dt (a resting box gains "
-                "|g| dt per step and must not hop)"),
-        *COMMON,
+        *IMPULSE_SETTINGS, RESTITUTION_THRESHOLD, *COMMON,
     )
     threshold_setting = "restitution_threshold"
 

@@ -12,14 +12,24 @@ from __future__ import annotations
 import numpy as np
 
 from ..._jit import kernel
+from ...constraints.body_rows import (
+    gather_bodies,
+    integrate_row_positions,
+    integrate_row_velocities,
+    load_velocities,
+    store_velocities,
+)
 from ...constraints.colouring import colour_contacts
-from ...constraints.body_rows import (gather_bodies, integrate_row_positions, integrate_row_velocities,
-                                      load_velocities, store_velocities)
 from ...constraints.contact_coloured import RELAX, SOLVE, WARM, coloured_pass
 from ...constraints.contact_restitution import restitution_contacts
 from ...constraints.contact_soft import prepare_contacts, store_impulses
 from ...constraints.contact_wide import pack, repack_normal, unpack
-from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
+from ...constraints.joints.dispatch import (
+    refresh_rows,
+    solve_joints,
+    store_joints,
+    warm_start_joints,
+)
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system
@@ -74,7 +84,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
         for it in range(p.iterations):
             coloured_pass(SOLVE, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:
-                solve_joints(c, B, J, JW, JS, True, p.inv_h, eq_global)
+                solve_joints(c, B, J, JW, JS, np.bool_(True), p.inv_h, eq_global)
         if c.ns > 0:  # last before the move, as kernel.py
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
@@ -87,7 +97,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             coloured_pass(RELAX, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:
                 refresh_rows(c, B, J, JW)  # the bodies moved: the rows where they are now
-                solve_joints(c, B, J, JW, JS, False, p.inv_h, eq_global)
+                solve_joints(c, B, J, JW, JS, np.bool_(False), p.inv_h, eq_global)
         if bouncy:  # restitution works on the rows: hand them over and take its impulses back
             unpack(C, W, order, slots, R)
             restitution_contacts(c, p, SB, C, R, V0)

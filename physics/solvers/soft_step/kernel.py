@@ -36,11 +36,26 @@ from __future__ import annotations
 import numpy as np
 
 from ..._jit import kernel
-from ...constraints.body_rows import (gather_bodies, integrate_row_positions, integrate_row_velocities,
-                                      load_velocities, store_velocities)
+from ...constraints.body_rows import (
+    gather_bodies,
+    integrate_row_positions,
+    integrate_row_velocities,
+    load_velocities,
+    store_velocities,
+)
 from ...constraints.contact_restitution import restitution_contacts
-from ...constraints.contact_soft import prepare_contacts, solve_contacts, store_impulses, warm_start_contacts
-from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
+from ...constraints.contact_soft import (
+    prepare_contacts,
+    solve_contacts,
+    store_impulses,
+    warm_start_contacts,
+)
+from ...constraints.joints.dispatch import (
+    refresh_rows,
+    solve_joints,
+    store_joints,
+    warm_start_joints,
+)
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system
@@ -64,6 +79,9 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
     n = c.n
     h = p.h
     broken = 0
+    # the passes' flags as plain booleans: numba compiles a kernel once per literal argument,
+    # so solve_contacts(..., True) and (..., False) would be two kernels, and so on down the joints
+    yes, no = np.bool_(True), np.bool_(False)
     if not p.warm_starting:
         zero_impulses(C, c.nc)
     prepare_contacts(c, p, B, C, R)
@@ -89,9 +107,9 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
         if J is not None:
             warm_start_joints(c, B, J, JW)
         for it in range(iterations):
-            solve_contacts(c, p, SB, C, R, True, True)
+            solve_contacts(c, p, SB, C, R, yes, yes)
             if J is not None:
-                solve_joints(c, B, J, JW, JS, True, p.inv_h, eq_global)
+                solve_joints(c, B, J, JW, JS, yes, p.inv_h, eq_global)
         if c.ns > 0:  # last before the move (module doc); the spring solver works on the body table
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
@@ -101,10 +119,10 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             refresh_rows(c, B, J, JW)
             correct_system(B, JW, JS, 1.0)
         if p.relax:
-            solve_contacts(c, p, SB, C, R, False, True)
+            solve_contacts(c, p, SB, C, R, no, yes)
             if J is not None:
                 refresh_rows(c, B, J, JW)  # the bodies moved: the rows where they are now
-                solve_joints(c, B, J, JW, JS, False, p.inv_h, eq_global)
+                solve_joints(c, B, J, JW, JS, no, p.inv_h, eq_global)
         if bouncy:
             restitution_contacts(c, p, SB, C, R, V0)  # in the sub-step of first touch
     store_impulses(c, C, R)

@@ -14,11 +14,13 @@ are off this step (asleep, broken) are decoupled (identity rows).
 """
 from __future__ import annotations
 
+import numpy as np
+
+from ...body_rows import II, IM
 from ..jit import row_kernel
 from ..layout import CC, KA, KB, NX, NY, SOFT_EQ
 from ..rows import apply_row, row_speed
 from ..shift import capped_error, shift_row
-from ...body_rows import II, IM
 from . import ldl
 
 
@@ -75,7 +77,7 @@ def factor_and_solve(JS):
 @row_kernel
 def solve_system(J, JW, JS, use_bias):
     """One velocity pass over all global equality rows (biased, or relax)."""
-    if not mark_skips(JW, JS, False):
+    if not mark_skips(JW, JS, np.bool_(False)):
         return
     assemble(JW, JS)
     G = JW.G
@@ -110,7 +112,7 @@ def solve_system(J, JW, JS, use_bias):
 @row_kernel
 def correct_system(B, JW, JS, beta):
     """One position pass: K dlam = -beta C (errors capped per row), applied to the positions."""
-    if not mark_skips(JW, JS, True):
+    if not mark_skips(JW, JS, np.bool_(True)):
         return
     assemble(JW, JS)
     G = JW.G
