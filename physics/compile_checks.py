@@ -86,3 +86,37 @@ def returns_checked():
     check = ReturnCheck()
     with event.install_listener("numba:compile", check):
         yield check
+
+
+class LiteralCheck(event.Listener):
+    """Names the core's kernels compiled for a literal argument: numba compiles a kernel once per
+    literal constant it is called with (``f(x, True)`` and ``f(x, False)`` are two kernels, and a
+    counter that starts at a literal 0 and is passed on costs one more), so a call passes plain
+    values instead (``np.bool_(True)``, ``np.int64(0)``).  numba's own library is not checked."""
+
+    def __init__(self):
+        self.bad: list[str] = []
+
+    def on_start(self, ev):
+        pass
+
+    def on_end(self, ev):
+        disp = ev.data["dispatcher"]
+        module = disp.py_func.__module__ or "numba"  # numba's generated overloads have none
+        if module.startswith("numba"):
+            return
+        lit = [f"argument {i}: {t}" for i, t in enumerate(ev.data["args"]) if isinstance(t, types.Literal)]
+        if lit:
+            self.bad.append(f"{_name(disp)} ({', '.join(lit)})")
+
+
+@contextmanager
+def literals_checked():
+    """Within the block, every kernel compiled for a literal argument is noted; RuntimeError
+    naming them all when the block ends."""
+    check = LiteralCheck()
+    with event.install_listener("numba:compile", check):
+        yield check
+    if check.bad:
+        raise RuntimeError("kernels compiled for literal arguments (pass np.int64(...) or np.bool_(...) "
+                           "instead of a constant):\n  " + "\n  ".join(sorted(set(check.bad))))

@@ -241,9 +241,9 @@ def mark(unit: str) -> None:
 
 
 def _worker(unit: str):
-    from .compile_checks import returns_checked
+    from .compile_checks import literals_checked, returns_checked
     t0, c0 = time.time(), time.process_time()
-    with returns_checked():
+    with returns_checked(), literals_checked():
         run_unit(unit)
     mark(unit)
     return unit, time.time() - t0, time.process_time() - c0

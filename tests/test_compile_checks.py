@@ -13,9 +13,8 @@ def test_a_runtime_free_kernel_returning_its_argument_is_named():
     def echo(a):
         return a
 
-    with pytest.raises(RuntimeError, match="echo"):
-        with returns_checked():
-            echo(np.zeros(3))
+    with pytest.raises(RuntimeError, match="echo"), returns_checked():
+        echo(np.zeros(3))
 
 
 def test_a_runtime_free_kernel_returning_a_tuple_with_an_array_is_named():
@@ -23,9 +22,8 @@ def test_a_runtime_free_kernel_returning_a_tuple_with_an_array_is_named():
     def pair(a, n):
         return n, a
 
-    with pytest.raises(RuntimeError, match="pair"):
-        with returns_checked():
-            pair(np.zeros(3), 2)
+    with pytest.raises(RuntimeError, match="pair"), returns_checked():
+        pair(np.zeros(3), 2)
 
 
 def test_numbers_and_runtime_kernels_pass():
@@ -62,3 +60,28 @@ def test_a_runtime_free_kernel_taking_arrays_from_a_runtime_kernel_is_named():
     with pytest.raises(RuntimeError, match="user takes arrays from .*grown"):
         with returns_checked():
             user(np.zeros(3), 5)
+
+
+def test_a_kernel_compiled_for_a_literal_argument_is_named():
+    """A constant passed to a kernel compiles it once per constant (numba types it as a literal):
+    the precompile names such calls; plain values pass."""
+    from physics.compile_checks import literals_checked
+
+    @numba.njit
+    def pick(a, flag):
+        return a[0] if flag else a[1]
+
+    @numba.njit
+    def both(a):
+        return pick(a, True) + pick(a, False)
+
+    @numba.njit
+    def plain(a):
+        return pick(a, np.bool_(True)) + pick(a, np.bool_(False))
+
+    with pytest.raises(RuntimeError, match=r"pick \(argument 1: Literal\[bool\]\(True\)\)"):
+        with literals_checked():
+            both(np.arange(2.0))
+    with literals_checked() as check:
+        assert plain(np.arange(2.0)) == 1.0
+    assert check.bad == []

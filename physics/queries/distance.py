@@ -107,6 +107,6 @@ def core_distance(P, Q):
                 j2 = (j + 1) % nb
                 if _cross(P[i, 0], P[i, 1], P[i2, 0], P[i2, 1], Q[j, 0], Q[j, 1], Q[j2, 0], Q[j2, 1]):
                     return 0.0, P[i, 0], P[i, 1], P[i, 0], P[i, 1]
-    _vertex_edges(P, Q, out, False)
-    _vertex_edges(Q, P, out, True)
+    _vertex_edges(P, Q, out, np.bool_(False))  # plain flags: one kernel, not two
+    _vertex_edges(Q, P, out, np.bool_(True))
     return out[0], out[1], out[2], out[3], out[4]

@@ -109,8 +109,9 @@ def build(B, n, reg, info, items, box, tmp, emit):
             for d in range(4):
                 box[m, d] = aabb[i, d]
             m += 1
-    reg = _grow(reg, 1)
-    info = _grow(info, 1)
+    one = np.int64(1)  # not a literal 1: _grow compiles once
+    reg = _grow(reg, one)
+    info = _grow(info, one)
     reg[0, 0] = -math.inf
     reg[0, 1] = -math.inf
     reg[0, 2] = math.inf
@@ -171,7 +172,7 @@ def build(B, n, reg, info, items, box, tmp, emit):
 @kernel(entry=True, runtime=True)
 def quadtree_pairs(B, n, reg, info, items, box, tmp, head, pairs):
     """Pairs sorted by (i, j); returns (count, reg, info, items, box) like ``build``."""
-    k, _, reg, info, items, box = build(B, n, reg, info, items, box, tmp, True)
+    k, _, reg, info, items, box = build(B, n, reg, info, items, box, tmp, np.bool_(True))
     if k <= tmp.shape[0] and k <= pairs.shape[0]:
         sort_pairs(tmp, k, n, head, pairs)
     return k, reg, info, items, box

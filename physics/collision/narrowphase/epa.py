@@ -71,7 +71,7 @@ def start_polytope(va, vb, sw, count, poly, tol):
         poly[1, 0], poly[1, 1], poly[2, 0], poly[2, 1] = bx, by, cx, cy
     else:
         poly[1, 0], poly[1, 1], poly[2, 0], poly[2, 1] = cx, cy, bx, by
-    return 3
+    return np.int64(3)  # not a literal 3: expand compiles once
 
 
 @kernel(inline="always")

@@ -28,6 +28,8 @@ stay explicit, so slow swings are not damped.
 """
 from __future__ import annotations
 
+import numpy as np
+
 from ..._jit import kernel
 from ..point import cross
 from .implicit import DIAG, JAW, JAX, JAY, JBW, JBX, JBY, RHS, row_mass, row_speed
@@ -105,5 +107,5 @@ def add_rows(B, S, k, G, h, rows, bod, gam, r):
             rows[r, JAX] = 0.0
             rows[r, JAY] = 0.0
             rows[r, JAW] = 1.0
-            r = _row(B, rows, bod, gam, r, i, -1, ki, h)
+            r = _row(B, rows, bod, gam, r, i, np.int64(-1), ki, h)  # not a literal: one _row
     return r

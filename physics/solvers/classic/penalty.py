@@ -10,13 +10,15 @@ set by the damping ratio that matches the restitution).
 """
 from __future__ import annotations
 
+import numpy as np
+
 from ..._jit import kernel
 from ...constraints.point import prepare_points
 from ...settings import declare
 from ...store.flat import bodies_view, contacts_view, springs_view
 from ...store.optional import optional_joints
-from .common import COMMON, PENALTY_SETTINGS, SeedMode, contact_rate, penalty_params
 from .classic_joints import begin_classic_joints, end_classic_joints
+from .common import COMMON, PENALTY_SETTINGS, SeedMode, contact_rate, penalty_params
 from .contact_geometry import PENALTY, flag_all
 from .integrators import advance, save_start
 from .penalty_load import scale_penalty_points
@@ -30,7 +32,7 @@ def penalty_step(ctx, par, B, C, S, P, R, J, JW, JS):
     prepare_points(B, C, c.nc, p.stick_speed, P)
     if J is not None:
         begin_classic_joints(c, p, B, J, JW)
-    flag_all(C, c.nc, P, PENALTY)
+    flag_all(C, c.nc, P, np.int64(PENALTY))  # not a literal: one flag_all for every role
     scale_penalty_points(B, C, c.nc, P, p.pen[5])
     advance(c, p, B, S, C, P, R, J, JW, JS)
     return end_classic_joints(c, p, B, J, JW, JS)

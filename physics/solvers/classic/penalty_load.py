@@ -115,7 +115,7 @@ def scale_penalty_points(B, C, nc, P, limit):
     lambda_max (gram_lambda) exceeds the limit."""
     s = 1.0
     if nc > 0 and limit < math.inf:
-        lam = gram_lambda(B, C, nc, P, ITERATIONS)
+        lam = gram_lambda(B, C, nc, P, np.int64(ITERATIONS))  # not a literal: one kernel
         if lam > limit:  # beyond the measured limit: back to the linear bound, with its margin
             s = 0.5 * limit / lam
     for k in range(nc):

@@ -74,15 +74,17 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             bouncy = True
             break
     V0 = np.empty((n if bouncy else 0, 3))
+    # the pass kinds as plain integers: numba compiles a kernel once per literal argument
+    warm, solve, relax = np.int64(WARM), np.int64(SOLVE), np.int64(RELAX)
     for _ in range(p.substeps):
         integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
         if bouncy:
             save_velocities(SB, n, V0)
-        coloured_pass(WARM, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
+        coloured_pass(warm, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
         if J is not None:
             warm_start_joints(c, B, J, JW)
         for it in range(p.iterations):
-            coloured_pass(SOLVE, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
+            coloured_pass(solve, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:
                 solve_joints(c, B, J, JW, JS, np.bool_(True), p.inv_h, eq_global)
         if c.ns > 0:  # last before the move, as kernel.py
@@ -94,7 +96,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             refresh_rows(c, B, J, JW)
             correct_system(B, JW, JS, 1.0)
         if p.relax:
-            coloured_pass(RELAX, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
+            coloured_pass(relax, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:
                 refresh_rows(c, B, J, JW)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, np.bool_(False), p.inv_h, eq_global)
