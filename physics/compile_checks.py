@@ -51,15 +51,19 @@ def _array_sources(cres):
             yield _name(callee.dispatcher)
 
 
-class ReturnCheck(event.Listener):
-    """Raises RuntimeError at the compile of a runtime-free kernel that returns an array or takes
-    one from a kernel with the runtime; ``bad`` keeps what it named."""
+class _Check(event.Listener):
+    """A listener that looks at each compile when it ends; ``bad`` keeps what it named."""
 
     def __init__(self):
         self.bad: list[str] = []
 
     def on_start(self, ev):
         pass
+
+
+class ReturnCheck(_Check):
+    """Raises RuntimeError at the compile of a runtime-free kernel that returns an array or takes
+    one from a kernel with the runtime."""
 
     def on_end(self, ev):
         disp = ev.data["dispatcher"]
@@ -88,17 +92,11 @@ def returns_checked():
         yield check
 
 
-class LiteralCheck(event.Listener):
+class LiteralCheck(_Check):
     """Names the core's kernels compiled for a literal argument: numba compiles a kernel once per
     literal constant it is called with (``f(x, True)`` and ``f(x, False)`` are two kernels, and a
     counter that starts at a literal 0 and is passed on costs one more), so a call passes plain
     values instead (``np.bool_(True)``, ``np.int64(0)``).  numba's own library is not checked."""
-
-    def __init__(self):
-        self.bad: list[str] = []
-
-    def on_start(self, ev):
-        pass
 
     def on_end(self, ev):
         disp = ev.data["dispatcher"]
