@@ -21,13 +21,7 @@ from ..collision.broadphase.fixture_filter import filter_pairs
 from ..collision.narrowphase.kernel import collide_with, sort_pairs
 from ..constraints.joints.kinds import kinds_changed
 from ..solvers.soft_step.kernel import soft_step
-from ..store.flat import (
-    bodies_view,
-    contacts_view,
-    fixtures_view,
-    springs_view,
-    verts_view,
-)
+from ..store.flat import bodies_view, contacts_view, fixtures_view, springs_view, verts_view
 from ..store.optional import optional_joints
 from .clock import cycles
 from .energy_bound import ACTIVE, guard_begin, guard_excess

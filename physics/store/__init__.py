@@ -5,60 +5,18 @@ receive it (and the step context) instead of the world object.
 """
 from __future__ import annotations
 
-from .bodies import (
-    BODY_FIELDS,
-    CIRCLE,
-    DYNAMIC,
-    KIND_NAMES,
-    KINDS,
-    KINEMATIC,
-    POLYGON,
-    STATIC,
-    Bodies,
-)
+from .bodies import BODY_FIELDS, CIRCLE, DYNAMIC, KIND_NAMES, KINDS, KINEMATIC, POLYGON, STATIC, Bodies
+from .fixtures import FIXTURE_FIELDS, FixtureTable, Fixtures
 from .contacts import CARRIED, CONTACT_FIELDS, MAX_POINTS, ContactBuffer, Contacts
-from .fixtures import FIXTURE_FIELDS, Fixtures, FixtureTable
-from .joints import JOINT_FIELDS, JOINT_KINDS, Joints, JointTable
+from .joints import JOINT_FIELDS, JOINT_KINDS, JointTable, Joints
 from .springs import SPRING_FIELDS, Springs
 from .table import Table, allocate, f8, grown, i1, i4, i8
 from .vertices import VERT_FIELDS, VertexPool, Verts
 
-__all__ = [
-    "BODY_FIELDS",
-    "CARRIED",
-    "CIRCLE",
-    "CONTACT_FIELDS",
-    "DYNAMIC",
-    "FIXTURE_FIELDS",
-    "JOINT_FIELDS",
-    "JOINT_KINDS",
-    "KINDS",
-    "KIND_NAMES",
-    "KINEMATIC",
-    "MAX_POINTS",
-    "POLYGON",
-    "SPRING_FIELDS",
-    "STATIC",
-    "VERT_FIELDS",
-    "Bodies",
-    "ContactBuffer",
-    "Contacts",
-    "FixtureTable",
-    "Fixtures",
-    "JointTable",
-    "Joints",
-    "Springs",
-    "Store",
-    "Table",
-    "VertexPool",
-    "Verts",
-    "allocate",
-    "f8",
-    "grown",
-    "i1",
-    "i4",
-    "i8",
-]
+__all__ = ["BODY_FIELDS", "CIRCLE", "DYNAMIC", "KIND_NAMES", "KINDS", "KINEMATIC", "POLYGON", "STATIC", "Bodies",
+           "CARRIED", "CONTACT_FIELDS", "MAX_POINTS", "ContactBuffer", "Contacts", "SPRING_FIELDS", "Springs",
+           "JOINT_FIELDS", "JOINT_KINDS", "JointTable", "Joints", "FIXTURE_FIELDS", "FixtureTable", "Fixtures",
+           "Table", "allocate", "f8", "grown", "i1", "i4", "i8", "VERT_FIELDS", "VertexPool", "Verts", "Store"]
 
 
 class Store:
@@ -68,7 +26,7 @@ class Store:
     joints on first use and kept across mode switches; None while the world has no joints).
     """
 
-    __slots__ = ("bodies", "contacts", "fixtures", "joint_work", "joints", "springs", "verts")
+    __slots__ = ("bodies", "fixtures", "verts", "springs", "joints", "contacts", "joint_work")
 
     def __init__(self):
         self.bodies = Table(BODY_FIELDS, Bodies, cap=64)

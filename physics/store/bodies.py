@@ -14,7 +14,7 @@ from .table_view import view_class
 DYNAMIC, STATIC, KINEMATIC = 0, 1, 2
 KINDS = {"dynamic": DYNAMIC, "static": STATIC, "kinematic": KINEMATIC}
 KIND_NAMES = {v: k for k, v in KINDS.items()}
-__all__ = ["BODY_FIELDS", "CIRCLE", "DYNAMIC", "KINDS", "KIND_NAMES", "KINEMATIC", "POLYGON", "STATIC", "Bodies"]
+__all__ = ["BODY_FIELDS", "Bodies", "CIRCLE", "DYNAMIC", "KINDS", "KIND_NAMES", "KINEMATIC", "POLYGON", "STATIC"]
 
 
 # name: (per-entry shape, dtype)

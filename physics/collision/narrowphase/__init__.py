@@ -20,18 +20,8 @@ from .limit import check_rows
 from .pair import GJK, METHODS, SAT, polygon_collide
 from .sat import sat_query
 
-__all__ = [
-    "GJK",
-    "METHODS",
-    "SAT",
-    "circle_circle",
-    "collide",
-    "epa",
-    "gjk_distance",
-    "polygon_circle",
-    "polygon_collide",
-    "sat_query",
-]
+__all__ = ["collide", "sat_query", "gjk_distance", "epa", "polygon_collide",
+           "circle_circle", "polygon_circle", "SAT", "GJK", "METHODS"]
 
 
 def collide(ctx, B, F, V, pairs, npairs, contacts, limit: int = 1_000_000) -> int:

@@ -22,7 +22,8 @@ def face_separation(va, na, i, vb):
     s = nx * (vb[0, 0] - px) + ny * (vb[0, 1] - py)
     for j in range(1, vb.shape[0]):
         d = nx * (vb[j, 0] - px) + ny * (vb[j, 1] - py)
-        s = min(s, d)
+        if d < s:
+            s = d
     return s
 
 

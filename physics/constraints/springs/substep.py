@@ -30,20 +30,7 @@ from ..._jit import kernel
 from ..point import cross
 from . import geometric as geo
 from .geometry import anchor, movable
-from .implicit import (
-    DIAG,
-    JAW,
-    JAX,
-    JAY,
-    JBW,
-    JBX,
-    JBY,
-    RHS,
-    ROW_FIELDS,
-    apply_system,
-    row_speed,
-    solve_system,
-)
+from .implicit import DIAG, JAW, JAX, JAY, JBW, JBX, JBY, RHS, ROW_FIELDS, apply_system, row_speed, solve_system
 
 # explicit while h^2 sum k K (and h sum c K) at the spring's bodies stays below this
 # (symplectic Euler is stable to 4: a 16x margin keeps the explicit springs accurate)

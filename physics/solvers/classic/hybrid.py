@@ -13,14 +13,7 @@ impulse.impulse_step with ``hybrid`` set.
 from __future__ import annotations
 
 from ...settings import declare
-from .common import (
-    COMMON,
-    IMPACT_SPEED,
-    IMPULSE_SETTINGS,
-    PENALTY_SETTINGS,
-    contact_rate,
-    penalty_params,
-)
+from .common import COMMON, IMPACT_SPEED, IMPULSE_SETTINGS, PENALTY_SETTINGS, contact_rate, penalty_params
 from .impulse import ImpulseMode
 
 

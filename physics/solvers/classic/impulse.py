@@ -20,16 +20,8 @@ from ...settings import declare
 from ...store.flat import bodies_view, contacts_view, springs_view
 from ...store.optional import optional_joints
 from .classic_joints import begin_classic_joints, end_classic_joints
-from .common import (
-    COMMON,
-    IMPULSE_SETTINGS,
-    NO_PENALTY,
-    PROJECTIONS,
-    RESTITUTION_THRESHOLD,
-    SeedMode,
-    auto_speed,
-    share_factor,
-)
+from .common import (COMMON, IMPULSE_SETTINGS, NO_PENALTY, PROJECTIONS, RESTITUTION_THRESHOLD, SeedMode, auto_speed,
+                     share_factor)
 from .contact_geometry import classify
 from .impulses import activate_impulses, position_share, save_velocities, solve_impulses
 from .integrators import advance, save_start

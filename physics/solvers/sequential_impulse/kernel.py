@@ -28,22 +28,12 @@ Newton step on each structure's joint equations per pass).
 from __future__ import annotations
 
 from ..._jit import kernel
-from ...constraints.contact_rigid import (
-    contact_bias,
-    restitution_points,
-    solve_points,
-    warm_start_points,
-)
+from ...constraints.contact_rigid import contact_bias, restitution_points, solve_points, warm_start_points
+from ...constraints.point import prepare_points, zero_impulses
+from ...constraints.split_impulse import integrate_pseudo, reset_pseudo, solve_split, zero_rows
 from ...constraints.joints.dispatch import store_joints
 from ...constraints.joints.position import correct_joint_positions
 from ...constraints.joints.table_passes import begin_table_joints, table_joint_pass
-from ...constraints.point import prepare_points, zero_impulses
-from ...constraints.split_impulse import (
-    integrate_pseudo,
-    reset_pseudo,
-    solve_split,
-    zero_rows,
-)
 from ...constraints.springs.substep import solve_springs
 from ...store.flat import bodies_view, contacts_view, springs_view
 from ...store.optional import optional_joints

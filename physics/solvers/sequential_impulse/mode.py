@@ -9,8 +9,7 @@ from ...constraints.joints.work import after_step, joint_args
 from ...constraints.point import point_rows, point_type
 from ...settings import Setting, declare
 from ..base import SolverMode
-from ..joint_settings import GLOBAL as _GLOBAL
-from ..joint_settings import joint_position_setting, joint_solver_setting
+from ..joint_settings import GLOBAL as _GLOBAL, joint_position_setting, joint_solver_setting
 from .kernel import BAUMGARTE, GLOBAL, MAX_PUSH, SPLIT, si_step_flat
 
 assert GLOBAL == _GLOBAL

@@ -12,24 +12,14 @@ from __future__ import annotations
 import numpy as np
 
 from ..._jit import kernel
-from ...constraints.body_rows import (
-    gather_bodies,
-    integrate_row_positions,
-    integrate_row_velocities,
-    load_velocities,
-    store_velocities,
-)
 from ...constraints.colouring import colour_contacts
+from ...constraints.body_rows import (gather_bodies, integrate_row_positions, integrate_row_velocities,
+                                      load_velocities, store_velocities)
 from ...constraints.contact_coloured import RELAX, SOLVE, WARM, coloured_pass
 from ...constraints.contact_restitution import restitution_contacts
 from ...constraints.contact_soft import prepare_contacts, store_impulses
 from ...constraints.contact_wide import pack, repack_normal, unpack
-from ...constraints.joints.dispatch import (
-    refresh_rows,
-    solve_joints,
-    store_joints,
-    warm_start_joints,
-)
+from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system

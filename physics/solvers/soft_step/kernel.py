@@ -36,26 +36,11 @@ from __future__ import annotations
 import numpy as np
 
 from ..._jit import kernel
-from ...constraints.body_rows import (
-    gather_bodies,
-    integrate_row_positions,
-    integrate_row_velocities,
-    load_velocities,
-    store_velocities,
-)
+from ...constraints.body_rows import (gather_bodies, integrate_row_positions, integrate_row_velocities,
+                                      load_velocities, store_velocities)
 from ...constraints.contact_restitution import restitution_contacts
-from ...constraints.contact_soft import (
-    prepare_contacts,
-    solve_contacts,
-    store_impulses,
-    warm_start_contacts,
-)
-from ...constraints.joints.dispatch import (
-    refresh_rows,
-    solve_joints,
-    store_joints,
-    warm_start_joints,
-)
+from ...constraints.contact_soft import prepare_contacts, solve_contacts, store_impulses, warm_start_contacts
+from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system

@@ -9,8 +9,7 @@ from ...constraints.joints.work import after_step, joint_args
 from ...constraints.softness import softness
 from ...settings import Setting, declare
 from ..base import SolverMode
-from ..joint_settings import GLOBAL as _GLOBAL
-from ..joint_settings import joint_solver_setting
+from ..joint_settings import GLOBAL as _GLOBAL, joint_solver_setting
 from .kernel import GLOBAL, soft_step_flat
 from .layout import LAYOUTS, ColouredScratch
 
