@@ -1,26 +1,24 @@
-"""Writes store/flat.py: one compiled function per table that rebuilds the table's namedtuple of
-column views from its flat arrays (``Columns.flat``: F, I and the separate arrays).
+"""Writes store/flat.py: one compiled function per table that builds the table's value
+(store/table_type.py: its few arrays, its fields made on access) from its flat arrays
+(``Columns.flat``: F, I and the separate arrays).
 
     python -m physics.store.make_flat          # rewrite physics/store/flat.py
     python -m physics.store.make_flat --check  # exit 1 if it is out of date (tests run this)
 
-A Python -> numba call unboxes every array it is given: a namedtuple of 26 column views costs
-about 7 us, its two 2-D arrays about 0.4 us (docs/flat-step.md).  So the step's entry points take
-the flat arrays and call these inside compiled code, where building a tuple of slices is free,
-and the kernels behind them keep their namedtuple signatures: the views built here have exactly
-the numba types of the views store/table.py builds in Python, so each kernel compiles once.
-The functions are written out, not built with exec, because numba caches only functions it can
-find in a source file.  A view returns arrays, so it is compiled with numba's runtime, and so are
-its callers (physics/_jit.py, compile_checks.py): the step's entry points, once per call.  They
-are entries too: tests/test_store_flat.py calls them from Python against the Python views.
+The step's entry points take the flat arrays (a Python -> numba call unboxes each array it is
+given, docs/flat-step.md) and call these inside compiled code.  The value built here has exactly
+the numba type of the Python view over the same arrays (store/table_view.py), so each kernel
+compiles once, whichever side calls it.  The functions are written out, not built with exec,
+because numba caches only functions it can find in a source file.  A table value holds arrays,
+so these are compiled with numba's runtime, and so are their callers (physics/_jit.py,
+compile_checks.py).  They are entries too: tests/test_store_flat.py calls them from Python
+against the Python views.
 """
 from __future__ import annotations
 
 import argparse
 import sys
 from pathlib import Path
-
-import numpy as np
 
 from .bodies import BODY_FIELDS
 from .contacts import CONTACT_FIELDS
@@ -32,7 +30,7 @@ from .table_type import sources_of
 from .vertices import VERT_FIELDS
 
 OUT = Path(__file__).with_name("flat.py")
-#: table -> (its fields, the namedtuple's module and name)
+#: table (also its view's tag) -> (its fields, its view class's module and name)
 TABLES = {
     "bodies": (BODY_FIELDS, "bodies", "Bodies"),
     "fixtures": (FIXTURE_FIELDS, "fixtures", "Fixtures"),
@@ -41,40 +39,16 @@ TABLES = {
     "joints": (JOINT_FIELDS, "joints", "Joints"),
     "contacts": (CONTACT_FIELDS, "contacts", "Contacts"),
 }
-#: table -> the tag its view class registered (store/table_view.py)
-TAG = {"bodies": "bodies", "fixtures": "fixtures", "verts": "verts", "springs": "springs", "joints": "joints",
-       "contacts": "contacts"}
-
-
-def column_exprs(fields: dict) -> tuple[list[str], list[str]]:
-    """(the expression of each field's view over F, I and the separate arrays, the separate
-    arrays' argument names), in declaration order, as store/table.py lays the table out."""
-    exprs, extra, fc, ic = [], [], 0, 0
-    for name, (shape, dtype) in fields.items():
-        dt = np.dtype(dtype)
-        if separate(shape):
-            extra.append(name)
-            exprs.append(name)
-            continue
-        w = int(np.prod(shape))
-        base, c = ("F", fc) if dt.kind == "f" else ("I", ic)
-        if dt.kind == "f":
-            fc += w
-        else:
-            ic += w
-        e = f"{base}[:, {c}]" if not shape else f"{base}[:, {c}:{c + w}]"
-        exprs.append(e + ".view(np.uint64)" if dt == np.uint64 else e)
-    return exprs, extra
 
 
 def function(table: str) -> str:
     fields, _, tname = TABLES[table]
-    _, extra = column_exprs(fields)
+    extra = [name for name, (shape, _) in fields.items() if separate(shape)]
     args = ", ".join(["F", "I"] + extra)
     used = ", ".join(sources_of(fields))
     return (f"@kernel(runtime=True, entry=True)\ndef {table}_view({args}):\n"
             f"    \"\"\"The {tname} view of the flat arrays ({args}).\"\"\"\n"
-            f"    return make_table(\"{TAG[table]}\", ({used},))\n")
+            f"    return make_table(\"{table}\", ({used},))\n")
 
 
 def source() -> str:
