@@ -17,8 +17,10 @@ from ..collision import broadphase
 from ..collision.broadphase.limit import check_pairs
 from ..collision.narrowphase.kernel import manifold_scratch
 from ..constraints.joints.work import after_step, joint_work
+from .._jit import direct
 from ..errors import SimulationError
 from ..solvers.soft_step.layout import LAYOUTS
+from ..store.table import GENERATION
 from . import soft_driver as drv
 from .energy_bound import E_OUT, LIMIT_OUT
 from .pack import new_pack
@@ -45,6 +47,7 @@ class OneCall:
         self._dt = None  # the step length and the mode's settings version the slots were set for
         self._version = None
         self._h = 0.0  # the sub-step the impulses are carried at
+        self._call = None  # the driver compiled for the pack's type (_jit.direct)
 
     # -- whether and what --------------------------------------------------
     @staticmethod
@@ -56,12 +59,12 @@ class OneCall:
 
     @staticmethod
     def _key(world, pl, par) -> tuple:
-        """What the pack and the choice of path depend on (ids: the pack keeps the arrays alive)."""
+        """What the pack and the choice of path depend on: every attribute read directly, since
+        this runs once per step (store/table.py: GENERATION counts replaced table arrays)."""
         s = world._store
-        return (pl.edits, pl.python_steps, par.version, id(world._mode), id(s.bodies.arrays),
-                id(s.fixtures.arrays), id(s.verts.arrays), id(s.springs.arrays), id(s.joints.arrays),
-                s.joints.version, s.contacts.full, world.max_pairs, world._pair_filter is None,
-                world._n_sensors, pl.events.sensors.active, world.broadphase)
+        return (pl.edits, pl.python_steps, par.version, id(world._mode), GENERATION[0], s.joints.version,
+                s.contacts.full, world._max_pairs, world._pair_filter is None, world._n_sensors,
+                len(pl.events.sensors.keys) > 0, world._broadphase)
 
     def build(self, world, pl) -> None:
         """A pack of the world's arrays as they are, with room for the step's rows."""
@@ -97,7 +100,7 @@ class OneCall:
         S[S_CPAR] = S[S_EPAR] = 0  # the pack's first tables are the current ones
         self._dt = None  # the settings are written again before the next call
         self._keys = (tr.keys, tr._keys2)
-        self.P = new_pack(pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
+        self.P = P = new_pack(pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
                           *s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.verts.arrays.flat,
                           *s.springs.arrays.flat, *c.cur_cols.flat, *c.prev_cols.flat, pl._pairs, exclude,
                           *self._sort, self._scratch,
@@ -106,6 +109,7 @@ class OneCall:
                           isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, self._v0(len(mode.SB)),
                           JF, JI, JW, JS, kinds,
                           1 if c.full else None)
+        self._call = direct(soft_world_step, P)
 
     def _v0(self, rows: int) -> np.ndarray:
         """soft_step's start-velocity scratch, ``rows`` long."""
@@ -136,10 +140,10 @@ class OneCall:
         D[D_CADOPT] = s.contacts.adopt_factor(self._h, steps)
         D[D_JADOPT] = s.joints.adopt_factor(self._h, steps) if s.joints.n else 1.0
         t0 = time.perf_counter()
-        code = soft_world_step(self.P)
+        code = self._call(self.P)
         while drv.OK < code < drv.NONFINITE:
             self._grow(world, pl, code)
-            code = soft_world_step(self.P)
+            code = self._call(self.P)
         elapsed = time.perf_counter() - t0
         if code != drv.OK:
             self._refused(world, pl, code)
@@ -193,7 +197,9 @@ class OneCall:
 
     def _accepted(self, world, pl, dt: float, elapsed: float) -> None:
         S = self.S.tolist()  # the slots read once
-        self._mirror(world, S[S_NC])
+        c = world._store.contacts
+        c.swap()  # the contact tables were swapped inside the driver (_mirror)
+        c.n = S[S_NC]
         if world._store.joints.n:
             after_step(world._store, S[S_BROKEN])
         pl.n_awake = S[S_NAWAKE] if world._sleeping else -1

@@ -12,6 +12,22 @@ import numpy as np
 
 f8, i1, i4, i8 = np.float64, np.int8, np.int32, np.int64
 
+#: how many times any table's or vertex pool's arrays were replaced (growth, a restore), in any
+#: world: the step driver keeps references to the arrays and checks this one number per step
+#: instead of the identity of every table's arrays
+GENERATION = [0]
+
+
+class ArraysSlot:
+    """The ``arrays`` attribute of a table: assigning it counts in GENERATION."""
+
+    def __get__(self, obj, owner=None):
+        return self if obj is None else obj._arrays
+
+    def __set__(self, obj, value) -> None:
+        obj._arrays = value
+        GENERATION[0] += 1
+
 
 class Columns(dict):
     """A table's fields (name -> array) as column views of two row-major 2-D arrays: ``F``
@@ -86,6 +102,8 @@ def grown(arrays: Columns, cap: int) -> Columns:
 
 class Table:
     """A growable dense table of SoA fields with stable ids (swap-remove)."""
+
+    arrays = ArraysSlot()
 
     def __init__(self, fields: dict, tuple_type, cap: int = 64):
         self._fields = fields

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .table import allocate, f8, grown
+from .table import ArraysSlot, allocate, f8, grown
 from .table_view import view_class
 
 VERT_FIELDS = {
@@ -23,6 +23,8 @@ Verts = view_class("Verts", VERT_FIELDS, "verts")
 
 class VertexPool:
     """Vertices of all polygons in one array; holes are compacted lazily."""
+
+    arrays = ArraysSlot()
 
     def __init__(self, cap: int = 256):
         self.arrays = allocate(VERT_FIELDS, cap)

@@ -87,13 +87,14 @@ def may_touch(B, a, b, dt, spec):
 
 @kernel(inline="always")
 def _relative(V, F, i, ox, oy, out):
-    """Core vertices of fixture i shifted by -(ox, oy) into ``out``; returns the view."""
+    """Core vertices of fixture i shifted by -(ox, oy) into ``out``; returns how many (the caller
+    slices ``out``: a kernel compiled without numba's runtime cannot hand back an array view)."""
     s = F.vstart[i]
     n = F.vcount[i]
     for k in range(n):
         out[k, 0] = V.world[s + k, 0] - ox
         out[k, 1] = V.world[s + k, 1] - oy
-    return out[:n]
+    return n
 
 
 @kernel(inline="always")
@@ -128,7 +129,7 @@ def _manifold(B, F, V, fa, fb, a, b, method, full, margin, sc_a, sc_b, sw, si, l
         # one call site for both orders (compile time); the kernel's normal
         # goes core -> circle, so flip it when the circle is a
         p, c = (fa, fb) if tb == CIRCLE else (fb, fa)
-        vp = _relative(V, F, p, ox, oy, sc_a)
+        vp = sc_a[:_relative(V, F, p, ox, oy, sc_a)]
         np_ = V.wnormal[F.vstart[p]:F.vstart[p] + F.vcount[p]]
         rp = F.radius[p]
         cnt, nx, ny = polygon_circle(vp, np_, F.wcenter[c, 0] - ox, F.wcenter[c, 1] - oy, F.radius[c] + rp,
@@ -140,9 +141,9 @@ def _manifold(B, F, V, fa, fb, a, b, method, full, margin, sc_a, sc_b, sw, si, l
         if c == fa:
             return cnt, -nx, -ny
         return cnt, nx, ny
-    vb = _relative(V, F, fb, ox, oy, sc_b)
+    vb = sc_b[:_relative(V, F, fb, ox, oy, sc_b)]
     nb = V.wnormal[F.vstart[fb]:F.vstart[fb] + F.vcount[fb]]
-    va = _relative(V, F, fa, ox, oy, sc_a)
+    va = sc_a[:_relative(V, F, fa, ox, oy, sc_a)]
     na = V.wnormal[F.vstart[fa]:F.vstart[fa] + F.vcount[fa]]
     bias = BIAS * min(B.bound_r[a], B.bound_r[b])
     if ta == POLYGON and tb == POLYGON and F.radius[fa] == 0.0 and F.radius[fb] == 0.0:
@@ -158,7 +159,7 @@ def _manifold(B, F, V, fa, fb, a, b, method, full, margin, sc_a, sc_b, sw, si, l
 def _chain(B, F, V, fa, fb, a, b, ox, oy, margin, sc_a, sc_b, out_p, out_s, out_f):
     """A chain segment against any shape (chain.py); the normal is flipped when the chain is b."""
     s, o = (fa, fb) if F.shape[fa] == CHAIN_SEGMENT else (fb, fa)
-    vs = _relative(V, F, s, ox, oy, sc_a)
+    vs = sc_a[:_relative(V, F, s, ox, oy, sc_a)]
     g = sc_a[2:4]
     for k in range(2):
         g[k, 0] = F.wghost[s, k, 0] - ox
@@ -167,7 +168,7 @@ def _chain(B, F, V, fa, fb, a, b, ox, oy, margin, sc_a, sc_b, out_p, out_s, out_
         cnt, nx, ny = chain_circle(vs, g, F.wcenter[o, 0] - ox, F.wcenter[o, 1] - oy, F.radius[o], margin,
                                    out_p, out_s, out_f)
     else:
-        vo = _relative(V, F, o, ox, oy, sc_b)
+        vo = sc_b[:_relative(V, F, o, ox, oy, sc_b)]
         ns = V.wnormal[F.vstart[s]:F.vstart[s] + 2]
         no = V.wnormal[F.vstart[o]:F.vstart[o] + F.vcount[o]]
         bias = BIAS * min(B.bound_r[a], B.bound_r[b])
