@@ -66,12 +66,12 @@ def test_soft_step_gains_nothing_at_the_source_in_the_contact_step():
     so the contacts no longer push the capsule along the stiff spring after it was solved: the
     step on the chain ends at 0.2 J from 1.5 J (1360 J when the springs came first).
 
-    Not yet fixed: in the next step, off the ground, the spring alone takes the capsule to 985 J
-    and the guard refuses it (the test above).  The implicit spring sets the angular velocity to
-    remove its stretch through the 6 cm arm, and the rotation cap (constraints/body_rows.py,
-    pi/4 per 0.185 s sub-step: 4.2 rad/s) then clamps it in integrate_row_positions, after the
-    spring, so the linear part of the spring's impulse moves the anchor alone; the capsule ends
-    the step at w = -4.245 rad/s, the cap, with 985 J in the spring."""
+    The next step, off the ground, once took the capsule to 985 J: the rotation cap clamped the
+    angular velocity the implicit spring had set, after the spring was solved.  The cap is now a
+    bound of the spring solve (constraints/springs/substep.py; tests/test_spring_large_steps.py):
+    with the guard off the capsule's energy over three steps is 1.54 -> 0.11, -0.006, -0.03 J
+    (sequential_impulse, whose contacts act after its springs: 1.54 -> 0.11, 0.076 J; 3.7e5 J
+    before)."""
     w, _ = capsule_on_chain()
     w.energy_guard = 0.0
     energy = Energy(w)

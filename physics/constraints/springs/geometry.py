@@ -1,9 +1,14 @@
-"""Where a spring's anchors are: the one piece every spring formulation shares."""
+"""Where a spring's anchors are, and its axis row there: what every spring formulation shares."""
 from __future__ import annotations
 
 import math
 
 from ..._jit import kernel
+from ..point import cross
+from . import geometric as geo
+from .implicit import JAW, JAX, JAY, JBW, JBX, JBY, row_speed
+
+SKIP, EXPLICIT, IMPLICIT = 0, 1, 2  # a spring's kind in a sub-step (substep.py)
 
 
 @kernel
@@ -23,3 +28,51 @@ def anchor(X, Q, i, lx, ly):
 def movable(B, i):
     """Body slot i exists (i >= 0) and responds to impulses."""
     return i >= 0 and (B.inv_m[i] > 0.0 or B.inv_i[i] > 0.0)
+
+
+@kernel
+def spring_rows(B, X, Q, S, ns, G, rows, bod, kinv, kind):
+    """Axis, arms, length, stretch and tension (G), the axis row (rows[k], K in kinv) of every
+    spring with the bodies at positions ``X`` and angles ``Q`` (the velocities are the table's);
+    SKIP where the axis is undefined or the spring exerts nothing."""
+    for k in range(ns):
+        kind[k] = SKIP
+        a = S.a[k]
+        b = S.b[k]
+        pax, pay, rax, ray = anchor(X, Q, a, S.la[k, 0], S.la[k, 1])
+        if b >= 0:
+            pbx, pby, rbx, rby = anchor(X, Q, b, S.lb[k, 0], S.lb[k, 1])
+        else:
+            pbx, pby, rbx, rby = S.lb[k, 0], S.lb[k, 1], 0.0, 0.0
+        dx = pbx - pax
+        dy = pby - pay
+        length = math.hypot(dx, dy)
+        if length < 1e-12 or (S.k[k] == 0.0 and S.c[k] == 0.0):
+            continue  # no axis (the force direction is undefined at zero length) or no force
+        ux = dx / length
+        uy = dy / length
+        bod[k, 0] = a
+        bod[k, 1] = b
+        rows[k, JAX] = -ux
+        rows[k, JAY] = -uy
+        rows[k, JAW] = -cross(rax, ray, ux, uy)
+        rows[k, JBX] = ux
+        rows[k, JBY] = uy
+        rows[k, JBW] = cross(rbx, rby, ux, uy)
+        # summed in this order so that springs without geometric rows keep their trajectories bit for bit
+        imb = B.inv_m[b] if b >= 0 else 0.0
+        iib = B.inv_i[b] if b >= 0 else 0.0
+        kinv[k] = B.inv_m[a] + imb + B.inv_i[a] * rows[k, JAW] * rows[k, JAW] + iib * rows[k, JBW] * rows[k, JBW]
+        if kinv[k] == 0.0:
+            continue
+        stretch = length - S.rest[k]
+        G[k, geo.UX] = ux
+        G[k, geo.UY] = uy
+        G[k, geo.RAX] = rax
+        G[k, geo.RAY] = ray
+        G[k, geo.RBX] = rbx
+        G[k, geo.RBY] = rby
+        G[k, geo.LEN] = length
+        G[k, geo.STRETCH] = stretch
+        G[k, geo.TENSION] = S.k[k] * stretch + S.c[k] * row_speed(B.v, B.w, rows, bod, k)
+        kind[k] = IMPLICIT

@@ -22,68 +22,18 @@ same test, on the geometric stiffness of the turning axis and arms
 """
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from ..._jit import kernel
-from ..point import cross
 from . import geometric as geo
-from .geometry import anchor, movable
+from .geometry import EXPLICIT, IMPLICIT, SKIP, movable, spring_rows
 from .implicit import DIAG, JAW, JAX, JAY, JBW, JBX, JBY, RHS, ROW_FIELDS, apply_system, row_speed, solve_system
+from .newton import copy_velocities, refine
 
 # explicit while h^2 sum k K (and h sum c K) at the spring's bodies stays below this
 # (symplectic Euler is stable to 4: a 16x margin keeps the explicit springs accurate)
 _EXPLICIT_LIMIT = 0.25
-SKIP, EXPLICIT, IMPLICIT = 0, 1, 2
 ROWS_PER_SPRING = 4  # the axis, the transverse row and an angular row per end
-
-
-@kernel
-def _geometry(B, S, ns, G, rows, bod, kinv, kind):
-    """Axis, arms, length, stretch and tension (G), the axis row (rows[k], K in kinv) of every
-    spring; SKIP where the axis is undefined or the spring exerts nothing."""
-    for k in range(ns):
-        kind[k] = SKIP
-        a = S.a[k]
-        b = S.b[k]
-        pax, pay, rax, ray = anchor(B.x, B.q, a, S.la[k, 0], S.la[k, 1])
-        if b >= 0:
-            pbx, pby, rbx, rby = anchor(B.x, B.q, b, S.lb[k, 0], S.lb[k, 1])
-        else:
-            pbx, pby, rbx, rby = S.lb[k, 0], S.lb[k, 1], 0.0, 0.0
-        dx = pbx - pax
-        dy = pby - pay
-        length = math.hypot(dx, dy)
-        if length < 1e-12 or (S.k[k] == 0.0 and S.c[k] == 0.0):
-            continue  # no axis (the force direction is undefined at zero length) or no force
-        ux = dx / length
-        uy = dy / length
-        bod[k, 0] = a
-        bod[k, 1] = b
-        rows[k, JAX] = -ux
-        rows[k, JAY] = -uy
-        rows[k, JAW] = -cross(rax, ray, ux, uy)
-        rows[k, JBX] = ux
-        rows[k, JBY] = uy
-        rows[k, JBW] = cross(rbx, rby, ux, uy)
-        # summed in this order so that springs without geometric rows keep their trajectories bit for bit
-        imb = B.inv_m[b] if b >= 0 else 0.0
-        iib = B.inv_i[b] if b >= 0 else 0.0
-        kinv[k] = B.inv_m[a] + imb + B.inv_i[a] * rows[k, JAW] * rows[k, JAW] + iib * rows[k, JBW] * rows[k, JBW]
-        if kinv[k] == 0.0:
-            continue
-        stretch = length - S.rest[k]
-        G[k, geo.UX] = ux
-        G[k, geo.UY] = uy
-        G[k, geo.RAX] = rax
-        G[k, geo.RAY] = ray
-        G[k, geo.RBX] = rbx
-        G[k, geo.RBY] = rby
-        G[k, geo.LEN] = length
-        G[k, geo.STRETCH] = stretch
-        G[k, geo.TENSION] = S.k[k] * stretch + S.c[k] * row_speed(B.v, B.w, rows, bod, k)
-        kind[k] = IMPLICIT
 
 
 @kernel
@@ -140,34 +90,34 @@ def _push(B, rows, bod, k, j):
 
 
 @kernel(runtime=True)
-def solve_springs(B, S, ns, h):
-    """One sub-step h of every spring: explicit impulses for the soft ones, then one implicit
-    system for the stiff axes and the stiff geometric modes (see the module doc)."""
-    cap = B.inv_m.shape[0]
-    nmax = ROWS_PER_SPRING * ns
-    rows = np.zeros((nmax, ROW_FIELDS))
-    bod = np.full((nmax, 2), -1, np.int64)
-    gam = np.zeros(nmax)
-    G = np.zeros((ns, geo.GEO_FIELDS))
-    kinv = np.zeros(ns)
-    kind = np.zeros(ns, np.int8)
-    stiff_geo = np.zeros(ns, np.bool_)
-    LK = np.empty(cap)
-    LC = np.empty(cap)
-    LG = np.empty(cap)
-    _geometry(B, S, ns, G, rows, bod, kinv, kind)
-    _classify(B, S, ns, h, G, kinv, kind, stiff_geo, LK, LC, LG)
-    # Hooke + damper (seed eqs. 18-20), explicit, in sequence (symplectic Euler)
+def _joined(S, ns, cap):
+    """(ids, nb): the ``nb`` distinct bodies the springs join, in the order they first appear."""
+    ids = np.empty(2 * ns, np.int64)
+    seen = np.zeros(cap, np.bool_)
+    nb = 0
     for k in range(ns):
-        if kind[k] == EXPLICIT:
-            cdot = row_speed(B.v, B.w, rows, bod, k)
-            _push(B, rows, bod, k, -h * (S.k[k] * G[k, geo.STRETCH] + S.c[k] * cdot))
-    # the implicit rows together, from the velocities the explicit ones left: the stiff axes
-    # first (compacted to the front), then the stiff geometric modes
+        for i in (S.a[k], S.b[k]):
+            if i >= 0 and not seen[i]:
+                seen[i] = True
+                ids[nb] = i
+                nb += 1
+    return ids, nb
+
+
+@kernel
+def _implicit_rows(B, S, ns, h, G, kinv, kind, stiff_geo, rows, bod, gam, axis, lin):
+    """The implicit rows, from the velocities the explicit ones left: the stiff axes first
+    (compacted to the front; ``axis``, ``lin`` keep each one's row and stretch), then the stiff
+    geometric modes.  Returns (rows, the implicit springs' elastic energy)."""
     nr = np.int64(0)  # not a literal 0: the row kernels compile once, not once more for it
+    elastic = 0.0
     for k in range(ns):
         if kind[k] != IMPLICIT:
             continue
+        for f in range(ROW_FIELDS):
+            axis[k, f] = rows[k, f]
+        lin[k] = G[k, geo.STRETCH]
+        elastic += 0.5 * S.k[k] * lin[k] * lin[k]
         if nr != k:  # element by element: an array assignment brings numba's shape-error code along
             for f in range(rows.shape[1]):
                 rows[nr, f] = rows[k, f]
@@ -181,8 +131,70 @@ def solve_springs(B, S, ns, h):
     for k in range(ns):
         if stiff_geo[k]:
             nr = geo.add_rows(B, S, k, G, h, rows, bod, gam, nr)
+    return nr, elastic
+
+
+@kernel
+def _kinetic(B, ids, nb, scale, VE, WE, I0):
+    """``scale`` plus the bodies' kinetic energy; their velocities into VE, WE and inverse
+    inertias into I0 (what newton.py starts from)."""
+    copy_velocities(B, ids, nb, VE, WE)
+    for j in range(nb):
+        i = ids[j]
+        I0[i] = B.inv_i[i]
+        if B.inv_m[i] > 0.0:
+            scale += 0.5 * (B.v[i, 0] ** 2 + B.v[i, 1] ** 2) / B.inv_m[i]
+        if B.inv_i[i] > 0.0:
+            scale += 0.5 * B.w[i] ** 2 / B.inv_i[i]
+    return scale
+
+
+@kernel(runtime=True)
+def solve_springs(B, S, ns, h):
+    """One sub-step h of every spring: explicit impulses for the soft ones, then backward Euler
+    on the stiff axes and the stiff geometric modes (see the module doc): solved once linearised
+    at the sub-step's start, then to its fixed point on the exact geometry and within the
+    rotation cap where that first solve is not it (newton.py)."""
+    cap = B.inv_m.shape[0]
+    ids, nb = _joined(S, ns, cap)
+    nmax = ROWS_PER_SPRING * ns
+    rows = np.zeros((nmax, ROW_FIELDS))
+    bod = np.full((nmax, 2), -1, np.int64)
+    gam = np.zeros(nmax)
+    G = np.zeros((ns, geo.GEO_FIELDS))
+    kinv = np.zeros(ns)
+    kind = np.zeros(ns, np.int8)
+    stiff_geo = np.zeros(ns, np.bool_)
+    LK = np.empty(cap)
+    LC = np.empty(cap)
+    LG = np.empty(cap)
+    X0 = np.empty((cap, 2))
+    Q0 = np.empty(cap)
+    XP = np.empty((cap, 2))
+    QP = np.empty(cap)
+    for j in range(nb):
+        i = ids[j]
+        X0[i, 0] = XP[i, 0] = B.x[i, 0]
+        X0[i, 1] = XP[i, 1] = B.x[i, 1]
+        Q0[i] = QP[i] = B.q[i]
+    spring_rows(B, XP, QP, S, ns, G, rows, bod, kinv, kind)
+    _classify(B, S, ns, h, G, kinv, kind, stiff_geo, LK, LC, LG)
+    # Hooke + damper (seed eqs. 18-20), explicit, in sequence (symplectic Euler)
+    for k in range(ns):
+        if kind[k] == EXPLICIT:
+            cdot = row_speed(B.v, B.w, rows, bod, k)
+            _push(B, rows, bod, k, -h * (S.k[k] * G[k, geo.STRETCH] + S.c[k] * cdot))
+    axis = np.zeros((ns, ROW_FIELDS))  # each implicit spring's row as last linearised
+    lin = np.zeros(ns)  # ... and its stretch there taken back to x0, C(y) - h J(y) v_y
+    nr, elastic = _implicit_rows(B, S, ns, h, G, kinv, kind, stiff_geo, rows, bod, gam, axis, lin)
     if nr == 0:
         return
-    lam = np.zeros(nr)
+    VE = np.empty((cap, 2))  # v_e
+    WE = np.empty(cap)
+    I0 = np.empty(cap)  # the inverse inertias (newton.py holds a body at the rotation cap without)
+    scale = _kinetic(B, ids, nb, elastic, VE, WE, I0)  # the step's energy
+    lam = np.zeros(nmax)
     solve_system(B, nr, rows, bod, gam, lam)
     apply_system(B, nr, rows, bod, lam)
+    refine(B, S, ns, h, ids, nb, X0, Q0, XP, QP, rows, bod, gam, kinv, kind, G, axis, lin, LK, lam, VE, WE, I0,
+           scale)
