@@ -74,6 +74,7 @@ def status(app) -> dict:
         "progress": app.warmup.progress()[0], "kernels_compiled": app.warmup.kernels_compiled(),
         "t_gate": app.warmup.t_gate,
         "warm_errors": app.warmup.errors, "running": app.sim.running, "solver": w.solver,
+        "solver_pending": app.mode_switch.describe(), "compiling_note": app.sim.compiling_note,
         "n_bodies": len(w.bodies), "n_springs": len(w.springs),
         "n_joints": len([j for j in w.joints if not ed.is_tool_joint(j)]), "n_tool_joints": len(ed.tool_joints),
         "bodies": _bodies(app) if small else [],     # store reads: no kernel (also while compiling)

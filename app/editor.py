@@ -66,6 +66,7 @@ class Editor:
         self._hint = None                      # (text, world point, time, error) shown at the pointer
         self.on_document: list = []
         self.on_mode: list = []
+        self.mode_gate = None                  # asked before a mode switch (see switch_solver)
 
     @property
     def world(self):
@@ -252,10 +253,16 @@ class Editor:
             cmds = [SetProperty(self, b, "kind", "dynamic" if b.kind != "dynamic" else "static") for b in bodies]
             self.execute(Group(cmds, "toggle static/dynamic"))
 
-    def switch_solver(self, mode):
+    def switch_solver(self, mode, now=False):
         """Switch the solver mode (undoable).  The switch wakes every body: a sleeping pile would
-        otherwise show nothing of the new mode (until the core wakes the world itself)."""
+        otherwise show nothing of the new mode (until the core wakes the world itself).
+        ``mode_gate(mode)`` is asked first unless ``now``: True if it holds the switch (the
+        window's ``app.mode_switch``: a mode not compiled yet switches once it is ready)."""
+        if not now and self.mode_gate is not None and self.mode_gate(mode):
+            return
         w = self.world
+        if mode == w.solver:
+            return
 
         def setter(m):
             w.solver = m

@@ -15,6 +15,28 @@ from . import compile_units
 MAX_STEPS_PER_FRAME = 4
 
 
+def waits_for(warmup, world, solver: str | None = None) -> str:
+    """What a step of ``world`` in ``solver`` (default: its own mode) would wait for, in words
+    ('': nothing, every kernel it runs is loaded here), asking the warmup for what is missing."""
+    solver = solver or world.solver
+    integrator = world.integrator
+    bp = compile_units.broadphase_of(world)
+    if not warmup.can_step(solver, integrator, bp):
+        warmup.prioritize(solver, integrator, bp)
+        return f"compiling {solver} ({integrator}, {bp} broad phase) ..."
+    narrow = compile_units.narrow_unit(world)
+    if not warmup.narrow_ready(narrow):
+        # the narrow phase's lean and whole kernels compile apart: the other one loads (or
+        # compiles) in the warmup thread, not in this step
+        warmup.want_unit(narrow)
+        return "compiling the narrow phase for these shapes ..."
+    if world.joints and not warmup.joints_ready(solver, integrator):
+        # the joint stage compiles once a world has a joint: in the warmup thread, not in this step
+        warmup.want_unit(compile_units.joints_unit(solver, integrator))
+        return f"compiling the joints of {solver} ({integrator}) ..."
+    return ""
+
+
 class Simulation:
     """Steps ``editor.world`` while ``running``; ``time_scale`` is simulated seconds per real second."""
 
@@ -52,22 +74,9 @@ class Simulation:
     def step(self, n) -> float:
         """Take n steps if the kernels are ready and the lock is free; returns ms spent."""
         w = self.editor.world
-        bp = compile_units.broadphase_of(w)
-        if not self.warmup.can_step(w.solver, w.integrator, bp):
-            self.warmup.prioritize(w.solver, w.integrator, bp)
-            self.compiling_note = f"compiling {w.solver} ({w.integrator}, {bp} broad phase) ..."
-            return 0.0
-        narrow = compile_units.narrow_unit(w)
-        if not self.warmup.narrow_ready(narrow):
-            # the narrow phase's lean and whole kernels compile apart: the other one loads (or
-            # compiles) in the warmup thread, not in this step
-            self.warmup.want_unit(narrow)
-            self.compiling_note = "compiling the narrow phase for these shapes ..."
-            return 0.0
-        if w.joints and not self.warmup.joints_ready(w.solver, w.integrator):
-            # the joint stage compiles once a world has a joint: in the warmup thread, not in this step
-            self.warmup.want_unit(compile_units.joints_unit(w.solver, w.integrator))
-            self.compiling_note = f"compiling the joints of {w.solver} ({w.integrator}) ..."
+        note = waits_for(self.warmup, w)
+        if note:
+            self.compiling_note = note
             return 0.0
         if not self.lock.acquire(blocking=False):
             self.compiling_note = "compiling kernels ..."

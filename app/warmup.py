@@ -267,16 +267,68 @@ class Warmup:
             self._wait_helper([f"solve:{solver}:{integrator}", f"broad:{bp}"], locked=False)
             self._unit("step:" + ":".join(key), locked=False)
             self.warmed.add(key)
+            # what this mode compiled: the next switch to it on a cold cache counts against it
+            self.counts.save({u: self._compiled(u) for u in self.mode_units(*key)})
 
     # -- what the window asks --------------------------------------------------------
-    def prioritize(self, solver: str, integrator: str, broadphase: str | None = None) -> None:
-        """Make this mode ready next (the user just switched to it)."""
+    def prioritize(self, solver: str, integrator: str, broadphase: str | None = None,
+                   first: bool = False) -> None:
+        """Make this mode ready next (the user just switched to it); ``first``: before the other
+        modes asked for (a comparison's rivals), since the user waits for this one."""
         key = (solver, integrator, broadphase or self.broadphase)
         with self._cv:
-            if key in self.warmed or key in self._wanted:
+            if key in self.warmed or (key in self._wanted and not first):
                 return
-            self._wanted.append(key)
+            if key in self._wanted:
+                self._wanted.remove(key)
+            self._wanted.insert(0, key) if first else self._wanted.append(key)
             self._cv.notify_all()
+
+    def want_apart(self, unit: str) -> None:
+        """Load ``unit`` here once the helper process has compiled it (first in its queue), so
+        that this process only loads it and the window keeps its frame rate meanwhile; without
+        a helper (or once it has it in the cache), as ``want_unit``."""
+        h = self.helper
+        if unit in self.loaded or unit in self.failed:
+            return
+        if h is not None and h.alive and not compile_units.cached(unit) and not h.settled(unit):
+            if unit != h.current and unit not in h.queue:
+                h.push(unit, first=True)
+            return
+        self.want_unit(unit)
+
+    def mode_units(self, solver: str, integrator: str, broadphase: str | None = None,
+                   joints: bool = False) -> list[str]:
+        """The units a switch to this mode loads (``_serve``): its solver, the broad phase, its
+        whole step and, for a world with joints, its joint stage."""
+        key = (solver, integrator, broadphase or self.broadphase)
+        units = [f"solve:{solver}:{integrator}", f"broad:{key[2]}", "step:" + ":".join(key)]
+        return units + ([compile_units.joints_unit(solver, integrator)] if joints else [])
+
+    def mode_progress(self, units: list[str]):
+        """(fraction 0..1, the work left in words) for a mode switched to that is not loaded yet:
+        ``units`` are its units that were not in the cache when the user picked it (counted as
+        ``progress`` counts the open scene's)."""
+        compiling = self._compiling()
+        frac, done, left, waiting = compile_progress.progress(units, self._compiled, self._finished,
+                                                              compiling, self.counts)
+        text = compile_progress.describe(done, left, waiting, loading=self._busy)
+        other = [u for u in compiling if u not in units]
+        if waiting and other and not any(u in compiling for u in units):
+            # the helper finishes what it started before the user asked (a unit is never cut short)
+            text += f" (after {compile_progress.unit_name(other[0])}, compiling now)"
+        return min(frac, 0.99), text
+
+    def _compiling(self) -> dict[str, str]:
+        """{unit: the kernel compiling now} in the helpers and here."""
+        compiling = {}
+        for h in self._helpers():
+            unit = h.current          # read once: the reader thread clears it
+            if unit is not None:
+                compiling[unit] = h.label.rsplit(".", 1)[-1]
+        if self._busy:
+            compiling[self.stage] = self.counter.label.rsplit(".", 1)[-1]
+        return compiling
 
     def want_unit(self, unit: str) -> None:
         """Load ``unit`` next: here (from the cache, or compiled), or after the helper if it is
@@ -339,13 +391,7 @@ class Warmup:
         waits for, in words: ``app.compile_progress``)."""
         if self._ready:
             return 1.0, "ready"
-        compiling = {}
-        for h in self._helpers():
-            unit = h.current          # read once: the reader thread clears it
-            if unit is not None:
-                compiling[unit] = h.label.rsplit(".", 1)[-1]
-        if self._busy:
-            compiling[self.stage] = self.counter.label.rsplit(".", 1)[-1]
+        compiling = self._compiling()
         frac, done, left, waiting = compile_progress.progress(self.todo, self._compiled, self._finished,
                                                               compiling, self.counts)
         return min(frac, 0.99), compile_progress.describe(done, left, waiting, loading=self._busy)

@@ -23,6 +23,7 @@ from .editor import Editor
 from .files import SceneFiles
 from .gl_config import create_window
 from .input import SceneInput
+from .mode_switch import PendingSwitch
 from .notices import Notices
 from .probes import Recorder
 from .panels import Panels, apply_style
@@ -81,6 +82,7 @@ class Sandbox(pyglet.window.Window):
         self.warmup = Warmup(world, lock)
         preview.hold(world)             # released by the first ready frame
         self.sim = Simulation(self.editor, self.warmup, self.notices, paused=paused, lock=lock)
+        self.mode_switch = PendingSwitch(self.editor, self.warmup)   # a mode picked before it is compiled
         self.timeline = Timeline()                # snapshots while playing: the timeline slider
         self.timeline.mark_of = lambda: scrub_marks.mark(self.editor.doc)
         self.sim.after_step = self._after_step
@@ -170,6 +172,7 @@ class Sandbox(pyglet.window.Window):
             preview.release(self.world)     # the kernels are loaded: the world's own render data
             self.prepare_scene()
             self.keep_timeline()
+            self.mode_switch.update()       # a picked mode whose kernels are now loaded: switch
             phys_ms, steps = self.sim.advance(real_dt, velocities=self.overlays.velocities)
             rd = self.check_bound() if steps else None
             self.sampler.sample(self.world, phys_ms, steps, self.frame_no)

@@ -1,6 +1,8 @@
 """Solver section: the mode and its settings, integrator, broad and narrow phase, sleeping."""
 from __future__ import annotations
 
+import time
+
 from imgui_bundle import imgui
 
 from physics import options
@@ -10,7 +12,7 @@ from .. import reliability
 from .base import Section, record
 from .number_typing import typed
 from .find_settings import FindSettings
-from .style import DIM
+from .style import AMBER, DIM
 
 WORLD_CHOICES = (("integrator", "integrator", options.INTEGRATORS),
                  ("broad phase", "broadphase", options.BROADPHASES),
@@ -59,15 +61,18 @@ class SolverSection(Section):
     def draw(self):
         app, ed = self.app, self.app.editor
         w = app.world
+        pending = app.mode_switch.mode
         opened = imgui.begin_combo("mode", w.solver)
         record(app, "solver_combo")
         if opened:
             for m in w.solvers:
-                clicked, _ = imgui.selectable(m, m == w.solver)
+                label = f"{m}  (compiling: switches when ready)###{m}" if m == pending else m
+                clicked, _ = imgui.selectable(label, m == w.solver)
                 record(app, f"solver:{m}")
-                if clicked and m != w.solver:
-                    ed.switch_solver(m)
+                if clicked and (m != w.solver or pending):
+                    ed.switch_solver(m)      # the running mode again cancels a pending switch
             imgui.end_combo()
+        self.pending(app, w)
         desc = " ".join(t for t in (mode_description(w.solver), reliability.summary(w.solver)) if t)
         app.ui_values["solver_description"] = desc
         if desc:
@@ -94,6 +99,29 @@ class SolverSection(Section):
         app.ui_values["solver_settings"] = {"solver": w.solver, "settings": w.settings.to_dict(),
                                             "integrator": w.integrator, "dt": w.dt}
         self.find.draw()
+
+    @staticmethod
+    def pending(app, w):
+        """A mode picked before its kernels are compiled (``app.mode_switch``): which, how far
+        its compile is, that the running mode goes on until then, and a way to stay."""
+        ms = app.mode_switch
+        if ms.mode is None:
+            app.ui_values.pop("solver_pending", None)
+            app.ui_rects.pop("solver_pending", None)
+            return
+        frac, label = ms.progress()
+        head = f"{ms.mode}: compiling, {100 * frac:.0f} % ({w.solver} runs until then)"
+        top, width = imgui.get_cursor_screen_pos(), imgui.get_content_region_avail().x
+        imgui.push_text_wrap_pos(0)
+        imgui.text_colored(AMBER, head)
+        imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")
+        imgui.text_colored(DIM, f"{time.monotonic() - ms.since:.0f} s: {label}")
+        imgui.pop_text_wrap_pos()
+        if imgui.small_button(f"Stay in {w.solver}##pending"):
+            app.editor.switch_solver(w.solver)
+        record(app, "solver_pending_cancel")
+        app.ui_rects["solver_pending"] = (top.x, top.y, top.x + width, imgui.get_item_rect_max().y)
+        app.ui_values["solver_pending"] = head
 
     def set_setting(self, w, name, value):
         mode = w.solver

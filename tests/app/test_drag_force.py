@@ -22,7 +22,8 @@ def switch_mode(app, mode):
     st = app.settle()
     x0, y0, x1, y1 = st["ui_rects"][f"solver:{mode}"]
     app.click((x0 + x1) / 2, (y0 + y1) / 2)
-    st = app.wait(lambda s: s["solver"] == mode, 20, f"solver {mode}")
+    # the mode switches once its kernels are loaded (the scene runs on meanwhile): seconds, warm
+    st = app.wait(lambda s: s["solver"] == mode, 120, f"solver {mode}")
     return app.wait(lambda s: s["steps"] > st["steps"] + 60, 600, f"stepping in {mode}")
 
 

@@ -70,7 +70,7 @@ def test_mode_switch_wakes_and_reset_keeps_the_solver(launch):
     st = app.settle()
     x0, y0, x1, y1 = st["ui_rects"]["solver:impulse"]
     app.click((x0 + x1) / 2, (y0 + y1) / 2)
-    st = app.wait(lambda s: s["solver"] == "impulse", 20, "the impulse mode")
+    st = app.wait(lambda s: s["solver"] == "impulse", 120, "the impulse mode")    # once loaded
     assert st["awake"] > 100, f"the switch left the pyramid asleep ({st['awake']} awake)"
     desc = st["ui_values"]["solver_description"]
     assert "failed" in desc and "speed" in desc, desc

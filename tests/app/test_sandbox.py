@@ -109,9 +109,9 @@ def test_switch_solver_mid_run(launch):
     target = others[0].split(":", 1)[1]
     x0, y0, x1, y1 = st["ui_rects"][others[0]]
     app.click((x0 + x1) / 2, (y0 + y1) / 2)
-    st = app.wait(lambda s: s["solver"] == target, 20, f"solver {target}")
+    # the new mode's kernels load (or compile) first while the scene runs on; then it switches
+    st = app.wait(lambda s: s["solver"] == target, 600, f"solver {target}")
     steps = st["steps"]
-    # the new mode's kernels may compile first (in the background); then stepping resumes
     st = app.wait(lambda s: s["steps"] > steps + 30, 600, "stepping with the new solver")
     assert not st["gl_errors"] and not st["fault"], st
     img = app.screenshot("switched")
