@@ -18,6 +18,8 @@ import numpy as np
 from .._jit import kernel
 from .resting import kept
 
+_NO_ENDS = np.zeros(0, np.int64)  # a step where nothing stopped touching (shared, never written)
+
 
 @kernel
 def touch_update(key, count, depth, jn, n, slop, prev, nprev, out, begin, absent):
@@ -87,9 +89,11 @@ class ContactTracker:
         self.begin, self._begin2 = self._begin2, self.begin
         self._absent, self._absent2 = self._absent2, self._absent
         self.n, self.nb = nt, nb
-        self.ends = self._absent[:na]
         if na:
+            self.ends = self._absent[:na]
             self._keep_sleeping(world)
+        else:  # the usual step: nothing ended (no view of the spare array made)
+            self.ends = _NO_ENDS
 
     def _keep_sleeping(self, world) -> None:
         keep = kept(world, self.ends)
