@@ -1,5 +1,8 @@
-"""A solver mode picked before its kernels are loaded: the scene goes on in the mode it runs, the
-new mode compiles first, and the switch happens by itself once it is ready.
+"""A solver mode, integrator or broad phase picked before its kernels are loaded: the scene goes
+on with what it runs, the new (mode, integrator, broad phase) compiles first, and the switch
+happens by itself once it is ready.  What is said below of a mode holds for the integrator and
+the broad phase (``Editor.set_integrator``, ``set_broadphase``); parts picked one after another
+wait together and apply together.
 
 Switching at once would stop the scene until the new mode is compiled (a minute or more on a
 cold cache: ``app.warmup``); the user would see a frozen scene and could not tell it apart from
