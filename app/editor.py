@@ -66,7 +66,7 @@ class Editor:
         self._hint = None                      # (text, world point, time, error) shown at the pointer
         self.on_document: list = []
         self.on_mode: list = []
-        self.mode_gate = None                  # asked before a mode switch (see switch_solver)
+        self.mode_gate = None                  # asked before a mode, integrator or broad phase change
 
     @property
     def world(self):
@@ -257,7 +257,8 @@ class Editor:
         """Switch the solver mode (undoable).  The switch wakes every body: a sleeping pile would
         otherwise show nothing of the new mode (until the core wakes the world itself).
         ``mode_gate(mode)`` is asked first unless ``now``: True if it holds the switch (the
-        window's ``app.mode_switch``: a mode not compiled yet switches once it is ready)."""
+        window's ``app.mode_switch``: a mode not compiled yet switches once it is ready; the
+        integrator and the broad phase ask it the same way)."""
         if not now and self.mode_gate is not None and self.mode_gate(mode):
             return
         w = self.world
@@ -275,6 +276,24 @@ class Editor:
         for cb in self.on_mode:
             cb(mode, w.integrator)
         self.notify(f"solver: {mode}")
+
+    def set_integrator(self, name, now=False) -> bool:
+        """The integrator (undoable), asking ``mode_gate`` first as ``switch_solver`` does."""
+        return self._set_stepping("integrator", name, now)
+
+    def set_broadphase(self, name, now=False) -> bool:
+        """The broad phase (undoable), asking ``mode_gate`` first as ``switch_solver`` does."""
+        return self._set_stepping("broadphase", name, now)
+
+    def _set_stepping(self, attr, value, now) -> bool:
+        """A world setting that picks the compiled step (integrator, broad phase): unless ``now``,
+        ``mode_gate`` may hold it until its kernels are loaded (True: held, or nothing to do)."""
+        if not now and self.mode_gate is not None and self.mode_gate(**{attr: value}):
+            return True
+        w = self.world
+        if getattr(w, attr) == value:
+            return True
+        return self.set_world(attr, value, lambda v: setattr(w, attr, v), lambda: getattr(w, attr))
 
     def set_step_rate(self, hz) -> bool:
         """The step rate in Hz (dt = 1/hz), within STEP_RATE; out of range is refused with a message."""

@@ -1,5 +1,8 @@
-"""A solver mode picked before its kernels are loaded: the scene goes on in the mode it runs, the
-new mode compiles first, and the switch happens by itself once it is ready.
+"""A solver mode, integrator or broad phase picked before its kernels are loaded: the scene goes
+on with what it runs, the new (mode, integrator, broad phase) compiles first, and the switch
+happens by itself once it is ready.  What is said below of a mode holds for the integrator and
+the broad phase (``Editor.set_integrator``, ``set_broadphase``); parts picked one after another
+wait together and apply together.
 
 Switching at once would stop the scene until the new mode is compiled (a minute or more on a
 cold cache: ``app.warmup``); the user would see a frozen scene and could not tell it apart from
@@ -23,15 +26,19 @@ import time
 from . import compile_units
 from .simulation import waits_for
 
+PARTS = ("solver", "integrator", "broadphase")
+WORDS = {"solver": "", "integrator": "integrator ", "broadphase": "broad phase "}
+
 
 class PendingSwitch:
-    """The mode switch of ``editor`` that waits for ``warmup``; ``mode`` is the mode waited for
-    (None: nothing pending)."""
+    """The choice of solver mode, integrator and broad phase of ``editor`` that waits for
+    ``warmup``: ``choice`` holds the parts picked and not applied yet ({} : nothing pending);
+    ``mode`` is its solver mode (None: the mode is not part of it)."""
 
     def __init__(self, editor, warmup):
         self.editor = editor
         self.warmup = warmup
-        self.mode: str | None = None
+        self.choice: dict[str, str] = {}  # part ("solver", "integrator", "broadphase") -> value
         self.since = 0.0                 # monotonic time the user picked it
         self._doc = None                 # the document it was picked in
         self._key = None                 # (mode, integrator, broad phase) it waits for
@@ -40,63 +47,105 @@ class PendingSwitch:
         editor.on_document.append(self._document)
         editor.on_mode.append(self._mode_set)
 
+    @property
+    def mode(self) -> str | None:
+        return self.choice.get("solver")
+
+    @property
+    def integrator(self) -> str | None:
+        return self.choice.get("integrator")
+
+    @property
+    def broadphase(self) -> str | None:
+        return self.choice.get("broadphase")
+
+    @property
+    def active(self) -> bool:
+        return bool(self.choice)
+
     # -- what the editor and the panels ask -------------------------------------------
-    def request(self, mode: str) -> bool:
-        """``Editor.switch_solver(mode)`` asks first: True if the switch is handled here (the mode
-        is the running one, or it compiles first and switches later); False to switch now."""
+    def request(self, solver: str | None = None, integrator: str | None = None,
+                broadphase: str | None = None) -> bool:
+        """``Editor.switch_solver(mode)``, ``set_integrator`` and ``set_broadphase`` ask first
+        (one part each): True if the change is handled here (it is the running value, or the
+        choice compiles first and applies later); False to apply it now."""
         ed = self.editor
         w = ed.world
-        if mode == w.solver:
-            if self.mode is not None:
-                self.cancel(f"solver stays {w.solver}: the switch to {self.mode} is cancelled")
+        asked = {k: v for k, v in zip(PARTS, (solver, integrator, broadphase)) if v is not None}
+        part, value = next(iter(asked.items()))
+        if value == self._running(part):
+            if part in self.choice:
+                was = self.label()
+                del self.choice[part]
+                ed.notify(f"{WORDS[part] or 'solver '}stays {value}: the switch to {was} is cancelled")
+                if not self.choice:
+                    self.clear()
             return True
         if waits_for(self.warmup, w):
-            self.clear()        # the running mode is not ready either: the scene waits anyway
+            self.clear()        # the running choice is not ready either: the scene waits anyway
             return False
-        key = self._key_of(mode)
+        choice = {**self.choice, part: value}
+        key = self._key_of(choice)
         self.warmup.prioritize(*key, first=True)
-        if not self._waits(mode):
-            self.clear()        # ready: switch now (a pending one is dropped)
-            return False
-        self.mode, self.since, self._doc = mode, time.monotonic(), ed.doc
+        if not self._waits(choice):
+            # ready: apply now, with the parts picked before (they are ready with it)
+            self.clear()
+            self._apply(choice)
+            return True
+        if not self.choice:
+            self.since, self._doc = time.monotonic(), ed.doc
+        self.choice = choice
         self._rekey(key)
-        ed.notify(f"{mode} compiles first: {w.solver} runs until then (pick {w.solver} again to stay)")
+        now = self._running_label()
+        ed.notify(f"{self.label()} compiles first: {now} runs until then (pick {WORDS[part]}"
+                  f"{self._running(part)} again to stay)")
         return True
 
     def update(self) -> None:
-        """Every frame: switch once the pending mode is ready."""
-        if self.mode is None:
+        """Every frame: apply the pending choice once it is ready."""
+        if not self.choice:
             return
         ed = self.editor
-        w = ed.world
         if ed.doc is not self._doc:
-            self.cancel(f"the switch to {self.mode} is cancelled: another scene is open")
+            self.cancel(f"the switch to {self.label()} is cancelled: another scene is open")
             return
-        if w.solver == self.mode:      # there another way (redo, Find settings' apply)
+        for part in [k for k, v in self.choice.items() if self._running(k) == v]:
+            del self.choice[part]      # there another way (redo, Find settings' apply)
+        if not self.choice:
             self.clear()
             return
-        key = self._key_of(self.mode)
-        if key != self._key:           # the integrator or broad phase changed meanwhile
+        key = self._key_of(self.choice)
+        if key != self._key:           # something else changed meanwhile (an undo, the shapes)
             self.warmup.prioritize(*key, first=True)
             self._rekey(key)
-        if ed.tool_joints or self._waits(self.mode):
+        if ed.tool_joints or self._waits(self.choice):
             return                     # (a mouse drag holds a body: after its release)
-        mode = self.mode
+        choice = self.choice
         self.clear()
-        ed.switch_solver(mode, now=True)
+        self._apply(choice)
 
     def cancel(self, why: str) -> None:
-        if self.mode is not None:
+        if self.choice:
             self.editor.notify(why)
         self.clear()
 
     def clear(self) -> None:
-        self.mode = self._doc = self._key = None
+        self.choice = {}
+        self._doc = self._key = None
         self._units = []
 
+    def label(self) -> str:
+        """The pending choice in words: "penalty", "integrator rk4, broad phase sap" ..."""
+        return ", ".join(f"{WORDS[k]}{v}" for k, v in sorted(self.choice.items(),
+                                                              key=lambda kv: PARTS.index(kv[0])))
+
+    def running_label(self) -> str:
+        """What runs until then, in the pending choice's words ("soft_step", "integrator euler")."""
+        return self._running_label()
+
     def progress(self):
-        """(fraction 0..1, the work left in words) of the pending mode's kernels."""
-        if self.mode is None:
+        """(fraction 0..1, the work left in words) of the pending choice's kernels."""
+        if not self.choice:
             return 1.0, ""
         if not self._units:
             return 0.99, "loading its kernels from the cache"
@@ -104,29 +153,56 @@ class PendingSwitch:
 
     def describe(self):
         """For the status file: the pending switch, or None."""
-        if self.mode is None:
+        if not self.choice:
             return None
         frac, text = self.progress()
-        return {"mode": self.mode, "from": self.editor.world.solver, "progress": frac, "text": text,
+        w = self.editor.world
+        return {"mode": self.mode, "integrator": self.integrator, "broadphase": self.broadphase,
+                "what": self.label(), "from": w.solver, "from_integrator": w.integrator,
+                "from_broadphase": w.broadphase, "progress": frac, "text": text,
                 "seconds": time.monotonic() - self.since}
 
     # -- inside -------------------------------------------------------------------------
-    def _key_of(self, mode):
+    def _running(self, part):
+        return getattr(self.editor.world, part)
+
+    def _running_label(self) -> str:
+        return ", ".join(f"{WORDS[k]}{self._running(k)}" for k in PARTS if k in self.choice)
+
+    def _key_of(self, choice):
+        """(mode, integrator, resolved broad phase) a step with ``choice`` applied would run."""
         w = self.editor.world
-        return mode, w.integrator, compile_units.broadphase_of(w)
+        bp = choice.get("broadphase")
+        if bp is None:
+            bp = compile_units.broadphase_of(w)
+        else:
+            from physics.collision.broadphase import resolve
+            bp = resolve(bp, w._store.fixtures.n)
+        return choice.get("solver", w.solver), choice.get("integrator", w.integrator), bp
+
+    def _apply(self, choice) -> None:
+        """Through the same undoable edits as a pick of a ready value; the mode last (its
+        ``on_mode`` listeners see the integrator it runs with)."""
+        ed = self.editor
+        if "integrator" in choice:
+            ed.set_integrator(choice["integrator"], now=True)
+        if "broadphase" in choice:
+            ed.set_broadphase(choice["broadphase"], now=True)
+        if "solver" in choice:
+            ed.switch_solver(choice["solver"], now=True)
 
     def _rekey(self, key) -> None:
         self._key = key
         units = self.warmup.mode_units(*key, joints=bool(self.editor.world.joints))
         self._units = [u for u in units if not self.warmup.cached(u)]
 
-    def _waits(self, mode) -> bool:
-        """Would a step in ``mode`` wait for a kernel?  As ``simulation.waits_for``, except that a
-        joint stage is compiled by the helper process and only loaded here (a compile in the
-        window's process would slow its frames while the scene runs)."""
+    def _waits(self, choice) -> bool:
+        """Would a step with ``choice`` wait for a kernel?  As ``simulation.waits_for``, except
+        that a joint stage is compiled by the helper process and only loaded here (a compile in
+        the window's process would slow its frames while the scene runs)."""
         w = self.editor.world
         warm = self.warmup
-        solver, integrator, bp = self._key_of(mode)
+        solver, integrator, bp = self._key_of(choice)
         if not warm.can_step(solver, integrator, bp):
             warm.prioritize(solver, integrator, bp)
             return True
@@ -140,14 +216,23 @@ class PendingSwitch:
         return False
 
     def _mode_set(self, solver, integrator) -> None:
-        """A mode set another way meanwhile (Find settings' apply) is the newer choice."""
-        if self.mode is not None and solver != self.mode:
-            self.cancel(f"the switch to {self.mode} is cancelled: {solver} was chosen")
+        """A mode or integrator set another way meanwhile (Find settings' apply) is the newer
+        choice: the pending parts it differs from are dropped."""
+        dropped = [k for k, v in (("solver", solver), ("integrator", integrator))
+                   if k in self.choice and self.choice[k] != v]
+        if not dropped:
+            return
+        was = self.label()
+        for k in dropped:
+            del self.choice[k]
+        self.editor.notify(f"the switch to {was} is cancelled: {solver} ({integrator}) was chosen")
+        if not self.choice:
+            self.clear()
 
     def _document(self, world, path, keep_camera) -> None:
-        if self.mode is None:
+        if not self.choice:
             return
         if keep_camera:                # a reset: the same scene, and it keeps the solver choice
             self._doc = self.editor.doc
         else:
-            self.cancel(f"the switch to {self.mode} is cancelled: another scene is open")
+            self.cancel(f"the switch to {self.label()} is cancelled: another scene is open")

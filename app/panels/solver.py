@@ -14,9 +14,12 @@ from .number_typing import typed
 from .find_settings import FindSettings
 from .style import AMBER, DIM
 
-WORLD_CHOICES = (("integrator", "integrator", options.INTEGRATORS),
-                 ("broad phase", "broadphase", options.BROADPHASES),
-                 ("narrow phase", "narrowphase", options.NARROWPHASES))
+# the choices that pick the compiled step wait for its kernels (``app.mode_switch``); the others
+# are set at once
+STEP_CHOICES = (("integrator", "integrator", options.INTEGRATORS),
+                ("broad phase", "broadphase", options.BROADPHASES))
+WORLD_CHOICES = (("narrow phase", "narrowphase", options.NARROWPHASES),)
+PENDING_LABEL = "  (compiling: switches when ready)"
 
 
 def mode_description(mode: str) -> str:
@@ -66,11 +69,11 @@ class SolverSection(Section):
         record(app, "solver_combo")
         if opened:
             for m in w.solvers:
-                label = f"{m}  (compiling: switches when ready)###{m}" if m == pending else m
+                label = f"{m}{PENDING_LABEL}###{m}" if m == pending else m
                 clicked, _ = imgui.selectable(label, m == w.solver)
                 record(app, f"solver:{m}")
                 if clicked and (m != w.solver or pending):
-                    ed.switch_solver(m)      # the running mode again cancels a pending switch
+                    ed.switch_solver(m)      # the running mode again cancels a pending mode
             imgui.end_combo()
         self.pending(app, w)
         desc = " ".join(t for t in (mode_description(w.solver), reliability.summary(w.solver)) if t)
@@ -81,6 +84,8 @@ class SolverSection(Section):
             imgui.pop_text_wrap_pos()
             record(app, "solver_description")
         self.settings(w)
+        for label, attr, choices in STEP_CHOICES:
+            self.step_choice(app, w, label, attr, choices)
         for label, attr, choices in WORLD_CHOICES:
             opts = list(choices)
             cur = getattr(w, attr)
@@ -101,24 +106,45 @@ class SolverSection(Section):
         self.find.draw()
 
     @staticmethod
+    def step_choice(app, w, label, attr, choices):
+        """The integrator or broad phase combo: a value whose kernels are not loaded waits for
+        them (``Editor.set_integrator``/``set_broadphase`` ask ``app.mode_switch``) and is listed
+        as compiling; the running value again cancels it."""
+        ed = app.editor
+        cur = getattr(w, attr)
+        pending = app.mode_switch.choice.get(attr)
+        opened = imgui.begin_combo(label, cur)
+        record(app, f"{attr}_combo")
+        if opened:
+            for v in choices:
+                text = f"{v}{PENDING_LABEL}###{v}" if v == pending else v
+                clicked, _ = imgui.selectable(text, v == cur)
+                record(app, f"{attr}:{v}")
+                if clicked and (v != cur or pending is not None):
+                    (ed.set_integrator if attr == "integrator" else ed.set_broadphase)(v)
+            imgui.end_combo()
+
+    @staticmethod
     def pending(app, w):
-        """A mode picked before its kernels are compiled (``app.mode_switch``): which, how far
-        its compile is, that the running mode goes on until then, and a way to stay."""
+        """A mode, integrator or broad phase picked before its kernels are compiled
+        (``app.mode_switch``): which, how far its compile is, that the running one goes on until
+        then, and a way to stay."""
         ms = app.mode_switch
-        if ms.mode is None:
+        if not ms.active:
             app.ui_values.pop("solver_pending", None)
             app.ui_rects.pop("solver_pending", None)
             return
         frac, label = ms.progress()
-        head = f"{ms.mode}: compiling, {100 * frac:.0f} % ({w.solver} runs until then)"
+        running = ms.running_label()
+        head = f"{ms.label()}: compiling, {100 * frac:.0f} % ({running} runs until then)"
         top, width = imgui.get_cursor_screen_pos(), imgui.get_content_region_avail().x
         imgui.push_text_wrap_pos(0)
         imgui.text_colored(AMBER, head)
         imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")
         imgui.text_colored(DIM, f"{time.monotonic() - ms.since:.0f} s: {label}")
         imgui.pop_text_wrap_pos()
-        if imgui.small_button(f"Stay in {w.solver}##pending"):
-            app.editor.switch_solver(w.solver)
+        if imgui.small_button(f"Stay with {running}##pending"):
+            ms.cancel(f"{running} stays: the switch to {ms.label()} is cancelled")
         record(app, "solver_pending_cancel")
         app.ui_rects["solver_pending"] = (top.x, top.y, top.x + width, imgui.get_item_rect_max().y)
         app.ui_values["solver_pending"] = head
