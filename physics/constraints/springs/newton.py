@@ -72,18 +72,26 @@ def _project(B, ids, nb, h, I0):
 
 
 @kernel
+def _kinetic_change(B, ids, nb, I0, VK, WK):
+    """The kinetic energy of the velocities' change from (VK, WK): from the iterate, or from v_e
+    (the first term of Phi)."""
+    moved = 0.0
+    for j in range(nb):
+        i = ids[j]
+        if B.inv_m[i] > 0.0:
+            moved += 0.5 * ((B.v[i, 0] - VK[i, 0]) ** 2 + (B.v[i, 1] - VK[i, 1]) ** 2) / B.inv_m[i]
+        if I0[i] > 0.0:
+            moved += 0.5 * (B.w[i] - WK[i]) ** 2 / I0[i]
+    return moved
+
+
+@kernel
 def _incremental_potential(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP):
     """Backward Euler's objective for the implicit springs, Phi(v) = 1/2 |v - v_e|_M^2 +
     sum_k 1/2 k_k C_k(x0 + h v)^2 (v_e the velocities before the implicit solve): its minimiser
     is the backward Euler step."""
     _predict(B, ids, nb, X0, Q0, h, XP, QP)
-    phi = 0.0
-    for j in range(nb):
-        i = ids[j]
-        if B.inv_m[i] > 0.0:
-            phi += 0.5 * ((B.v[i, 0] - VE[i, 0]) ** 2 + (B.v[i, 1] - VE[i, 1]) ** 2) / B.inv_m[i]
-        if I0[i] > 0.0:
-            phi += 0.5 * (B.w[i] - WE[i]) ** 2 / I0[i]
+    phi = _kinetic_change(B, ids, nb, I0, VE, WE)
     for k in range(ns):
         if kind[k] != IMPLICIT:
             continue
@@ -216,19 +224,6 @@ def _line_search(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP, VK, WK,
         B.v[i, 1] = VK[i, 1]
         B.w[i] = WK[i]
     return False
-
-
-@kernel
-def _kinetic_change(B, ids, nb, I0, VK, WK):
-    """The kinetic energy of the velocities' change from the iterate (VK, WK)."""
-    moved = 0.0
-    for j in range(nb):
-        i = ids[j]
-        if B.inv_m[i] > 0.0:
-            moved += 0.5 * ((B.v[i, 0] - VK[i, 0]) ** 2 + (B.v[i, 1] - VK[i, 1]) ** 2) / B.inv_m[i]
-        if I0[i] > 0.0:
-            moved += 0.5 * (B.w[i] - WK[i]) ** 2 / I0[i]
-    return moved
 
 
 @kernel(runtime=True)
