@@ -64,7 +64,7 @@ class OneCall:
         s = world._store
         return (pl.edits, pl.python_steps, par.version, id(world._mode), GENERATION[0], s.joints.version,
                 s.contacts.full, world._max_pairs, world._pair_filter is None, world._n_sensors,
-                len(pl.events.sensors.keys) > 0, world._broadphase)
+                pl.events.sensors.active, world._broadphase)
 
     def build(self, world, pl) -> None:
         """A pack of the world's arrays as they are, with room for the step's rows."""
@@ -197,9 +197,7 @@ class OneCall:
 
     def _accepted(self, world, pl, dt: float, elapsed: float) -> None:
         S = self.S.tolist()  # the slots read once
-        c = world._store.contacts
-        c.swap()  # the contact tables were swapped inside the driver (_mirror)
-        c.n = S[S_NC]
+        self._mirror(world, S[S_NC])
         if world._store.joints.n:
             after_step(world._store, S[S_BROKEN])
         pl.n_awake = S[S_NAWAKE] if world._sleeping else -1

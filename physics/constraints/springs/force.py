@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 
 from ..._jit import kernel
-from .geometry import anchor
+from .geometry import ends
 
 
 @kernel
@@ -24,17 +24,14 @@ def spring_forces(S, ns, X, Q, V, W, F, T):
     for s in range(ns):
         a = S.a[s]
         b = S.b[s]
-        pax, pay, rax, ray = anchor(X, Q, a, S.la[s, 0], S.la[s, 1])
+        pax, pay, rax, ray, pbx, pby, rbx, rby = ends(X, Q, S, s)
         vax = V[a, 0] - W[a] * ray
         vay = V[a, 1] + W[a] * rax
+        vbx = 0.0
+        vby = 0.0
         if b >= 0:
-            pbx, pby, rbx, rby = anchor(X, Q, b, S.lb[s, 0], S.lb[s, 1])
             vbx = V[b, 0] - W[b] * rby
             vby = V[b, 1] + W[b] * rbx
-        else:
-            pbx, pby, rbx, rby = S.lb[s, 0], S.lb[s, 1], 0.0, 0.0
-            vbx = 0.0
-            vby = 0.0
         dx = pax - pbx
         dy = pay - pby
         length = math.hypot(dx, dy)
@@ -61,13 +58,10 @@ def _geometric_rate(B, S, s):
     diverges as fast as a positive one oscillates)."""
     a = S.a[s]
     b = S.b[s]
-    pax, pay, rax, ray = anchor(B.x, B.q, a, S.la[s, 0], S.la[s, 1])
+    pax, pay, rax, ray, pbx, pby, rbx, rby = ends(B.x, B.q, S, s)
     inv_m = B.inv_m[a]
     if b >= 0:
-        pbx, pby, rbx, rby = anchor(B.x, B.q, b, S.lb[s, 0], S.lb[s, 1])
         inv_m += B.inv_m[b]
-    else:
-        pbx, pby, rbx, rby = S.lb[s, 0], S.lb[s, 1], 0.0, 0.0
     length = math.hypot(pbx - pax, pby - pay)
     if length < 1e-12:
         return 0.0

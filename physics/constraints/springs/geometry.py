@@ -25,6 +25,20 @@ def anchor(X, Q, i, lx, ly):
 
 
 @kernel
+def ends(X, Q, S, k):
+    """Spring k's anchors in the world and their arms: (pax, pay, rax, ray, pbx, pby, rbx, rby);
+    an end on the world (b < 0) is its fixed point with no arm."""
+    a = S.a[k]
+    b = S.b[k]
+    pax, pay, rax, ray = anchor(X, Q, a, S.la[k, 0], S.la[k, 1])
+    if b >= 0:
+        pbx, pby, rbx, rby = anchor(X, Q, b, S.lb[k, 0], S.lb[k, 1])
+    else:
+        pbx, pby, rbx, rby = S.lb[k, 0], S.lb[k, 1], 0.0, 0.0
+    return pax, pay, rax, ray, pbx, pby, rbx, rby
+
+
+@kernel
 def movable(B, i):
     """Body slot i exists (i >= 0) and responds to impulses."""
     return i >= 0 and (B.inv_m[i] > 0.0 or B.inv_i[i] > 0.0)
@@ -39,11 +53,7 @@ def spring_rows(B, X, Q, S, ns, G, rows, bod, kinv, kind):
         kind[k] = SKIP
         a = S.a[k]
         b = S.b[k]
-        pax, pay, rax, ray = anchor(X, Q, a, S.la[k, 0], S.la[k, 1])
-        if b >= 0:
-            pbx, pby, rbx, rby = anchor(X, Q, b, S.lb[k, 0], S.lb[k, 1])
-        else:
-            pbx, pby, rbx, rby = S.lb[k, 0], S.lb[k, 1], 0.0, 0.0
+        pax, pay, rax, ray, pbx, pby, rbx, rby = ends(X, Q, S, k)
         dx = pbx - pax
         dy = pby - pay
         length = math.hypot(dx, dy)

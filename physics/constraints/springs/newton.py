@@ -38,7 +38,7 @@ import numpy as np
 from ..._jit import kernel
 from ..body_rows import MAX_ROTATION
 from . import geometric as geo
-from .geometry import IMPLICIT, anchor, spring_rows
+from .geometry import IMPLICIT, ends, spring_rows
 from .implicit import DIAG, JAW, JAX, JAY, JBW, JBX, JBY, RHS, ROW_FIELDS, apply_system, row_speed, solve_system
 
 # at most NEWTON_ITERATIONS, while the miss exceeds NEWTON_TOLERANCE of the step's energy (kinetic
@@ -95,13 +95,7 @@ def _incremental_potential(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, Q
     for k in range(ns):
         if kind[k] != IMPLICIT:
             continue
-        a = S.a[k]
-        b = S.b[k]
-        pax, pay, _, _ = anchor(XP, QP, a, S.la[k, 0], S.la[k, 1])
-        if b >= 0:
-            pbx, pby, _, _ = anchor(XP, QP, b, S.lb[k, 0], S.lb[k, 1])
-        else:
-            pbx, pby = S.lb[k, 0], S.lb[k, 1]
+        pax, pay, _, _, pbx, pby, _, _ = ends(XP, QP, S, k)
         c = math.hypot(pbx - pax, pby - pay) - S.rest[k]
         phi += 0.5 * S.k[k] * c * c
     return phi
