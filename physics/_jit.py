@@ -55,11 +55,6 @@ CACHE_DIR = _configure_cache()
 
 from numba import njit as _njit  # noqa: E402  (after the cache dir is set)
 
-from . import _numba_inline  # noqa: E402
-
-if os.environ.get("STELKROPP_FAST_INLINE", "1") != "0":
-    _numba_inline.apply()
-
 
 def kernel(fn=None, *, runtime: bool = False, entry: bool = False, **kw):
     """``@kernel``: numba ``njit(cache=True, fastmath=False)`` for the core's hot loops.

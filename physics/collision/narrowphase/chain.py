@@ -20,6 +20,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from ..._jit import kernel
 from .manifold import polygon_manifold
 from .rounded import round_pair
@@ -111,7 +113,7 @@ def chain_polygon(v, nv, g, vb, nb, rb, margin, bias, out_p, out_s, out_f):
     if kind == 1:
         return c, nx, ny
     # snap: clip the shape against the segment's own face (face 0 of the core: normal n1)
-    c, nx, ny = polygon_manifold(v, nv, vb, nb, 0, 0, margin + rb, out_p, out_s, out_f)
+    c, nx, ny = polygon_manifold(v, nv, vb, nb, np.int64(0), np.int64(0), margin + rb, out_p, out_s, out_f)
     shift = -0.5 * rb
     for p in range(c):
         out_s[p] -= rb

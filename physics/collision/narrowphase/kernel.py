@@ -104,8 +104,9 @@ def _manifold(B, F, V, fa, fb, a, b, method, full, margin, sc_a, sc_b, sw, si, l
     Circles and sharp polygons take the paths they took before fixtures (bit for bit);
     any pair with a rounded core (rounded polygon, capsule, segment) takes rounded.py.
 
-    Only the sharp polygon pair (pyramids, piles: the hot path) is inlined here.  The rounded,
-    chain and circle pairs are compiled as functions of their own: inlined, they made ``_rows``
+    This dispatch is inlined into the pair loop; the pair routines it calls (``sat_pair``,
+    ``polygon_pair``, ``round_pair``, the chain pairs, ``polygon_circle``) are functions of their
+    own (pair.py's module doc).  Inlined, the rounded, chain and circle pairs made ``_rows``
     one function so large that numba's type inference of it was most of a cold launch (the
     narrow-phase unit: 43 -> 21 CPU s, docs/internals.md "Compile time"), for a call that costs
     a few ns against the hundreds of ns such a pair takes (bench/results/launch.md).

@@ -130,7 +130,7 @@ def clip(vr, nr, i, vi, ni, margin, out_p, out_s, out_f, flip):
     return c
 
 
-@kernel(inline="always")
+@kernel
 def polygon_manifold(va, na, vb, nb, flip, face, margin, out_p, out_s, out_f):
     """Manifold for a chosen reference face; returns (count, nx, ny), n from A to B."""
     # one clip call site for both roles: it is the biggest inlined kernel

@@ -5,6 +5,11 @@ the exact distance of apart shapes, EPA (seed 3.1) the penetration normal of
 overlapping ones; the reference face is the one aligned with that normal.
 Both end in the same clipping step, so they give the same manifold whenever
 they pick the same face (always, except for near-ties within the bias).
+
+``sat_pair``, ``polygon_pair`` and ``polygon_manifold`` (manifold.py) are functions of their own,
+called with plain arrays, not inlined into the narrow phase's pair loop: numba's IR inliner
+types a callee again at every call site and every level of nesting, and these three sit above
+the clipping and the separation helpers.  The leaf helpers below them stay inlined.
 """
 from __future__ import annotations
 
@@ -21,7 +26,7 @@ METHODS = {name: NARROWPHASES.index(name) for name in NARROWPHASES}
 assert METHODS == {"sat": SAT, "gjk": GJK}
 
 
-@kernel(inline="always")
+@kernel
 def sat_pair(va, na, vb, nb, margin, bias, out_p, out_s, out_f):
     """One polygon pair by SAT alone (the lean narrow kernel's, and ``polygon_pair``'s for SAT
     and for the GJK cases SAT settles): returns (count, nx, ny); count 0 when the pair is apart
@@ -33,10 +38,10 @@ def sat_pair(va, na, vb, nb, margin, bias, out_p, out_s, out_f):
     if sb > margin:
         return 0, 0.0, 0.0
     flip, face, _ = choose_reference(sa, fa, sb, fb, bias)
-    return polygon_manifold(va, na, vb, nb, flip, face, margin, out_p, out_s, out_f)
+    return polygon_manifold(va, na, vb, nb, np.int64(flip), np.int64(face), margin, out_p, out_s, out_f)
 
 
-@kernel(inline="always")
+@kernel
 def polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p, out_s, out_f):
     """Returns (count, nx, ny); count 0 when the pair is apart beyond ``margin``."""
     if method == GJK:
@@ -48,7 +53,7 @@ def polygon_pair(va, na, vb, nb, method, margin, bias, sw, si, lam, poly, out_p,
         # to n need not separate (a long sliver reaching past a corner); the
         # manifold then needs a face that does, which SAT finds
         if not (sep > 0.0 and s < 0.0):
-            return polygon_manifold(va, na, vb, nb, flip, face, margin, out_p, out_s, out_f)
+            return polygon_manifold(va, na, vb, nb, np.int64(flip), np.int64(face), margin, out_p, out_s, out_f)
     return sat_pair(va, na, vb, nb, margin, bias, out_p, out_s, out_f)
 
 

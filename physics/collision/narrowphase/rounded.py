@@ -22,6 +22,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from ..._jit import kernel
 from .manifold import polygon_manifold
 from .sat import choose_reference, max_separation
@@ -132,7 +134,7 @@ def round_pair(va, na, ra, vb, nb, rb, margin, bias, out_p, out_s, out_f):
     sa, fa = max_separation(va, na, vb)
     sb, fb = max_separation(vb, nb, va)
     flip, face, _ = choose_reference(sa, fa, sb, fb, bias)
-    c, nx, ny = polygon_manifold(va, na, vb, nb, flip, face, margin + rsum, out_p, out_s, out_f)
+    c, nx, ny = polygon_manifold(va, na, vb, nb, np.int64(flip), np.int64(face), margin + rsum, out_p, out_s, out_f)
     shift = 0.5 * (ra - rb)       # the midpoint of the rounded surfaces, not of the cores
     lo = math.inf
     for p in range(c):
