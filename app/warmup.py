@@ -71,6 +71,8 @@ class Warmup:
         self.key = (self.solver, self.integrator, self.broadphase)
         self.narrow = compile_units.narrow_unit(world)
         self.cache = compile_units.cache_dir()
+        # nothing compiled into this cache yet: the progress may say "first launch only"
+        self.first_launch = self.cache is None or not any(self.cache.glob("unit-*.ok"))
         mine, theirs = compile_units.gate_units(*self.key, self.narrow)
         self.gate = mine + theirs     # loaded here once the scene can run (the last step loads them)
         self.final = "step:" + ":".join(self.key) + (":full" if self.narrow != "narrow" else "")

@@ -305,6 +305,9 @@ class Sandbox(pyglet.window.Window):
     def draw_ui(self, ready):
         imgui.new_frame()
         self.panels.numbers.begin_frame()
+        self.ui_rects.pop("progress", None)       # drawn again below while the kernels compile
+        self.ui_values.pop("progress", None)
+        self.ui_values.pop("progress_head", None)
         if self.show_ui:
             self.panels.draw()
         elif not ready:

@@ -70,7 +70,6 @@ class Panels:
         app = self.app
         app.ui_rects.pop("main_window", None)
         app.ui_rects.pop("stats_window", None)
-        app.ui_rects.pop("progress", None)
         self.main_window()          # from the first frame: only stepping waits for the kernels
         self.solver.find.tick()
         if self.show_stats:

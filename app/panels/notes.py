@@ -51,15 +51,19 @@ def progress_window(app):
     imgui.set_next_window_bg_alpha(0.85)
     imgui.begin("##progress", None, NOTE_FLAGS & ~imgui.WindowFlags_.always_auto_resize.value)
     frac, label = app.warmup.progress()
-    imgui.text_colored(AMBER, "Compiling the physics kernels (first launch only): stepping starts when done")
+    # a later launch compiles only what a scene needs beyond the cache: not a "first launch"
+    head = ("Compiling the physics kernels (first launch only)" if app.warmup.first_launch
+            else "Compiling the kernels this scene needs (kept in the cache after)")
+    imgui.push_text_wrap_pos(0)
+    imgui.text_colored(AMBER, f"{head}: stepping starts when done")
     imgui.text_colored(DIM, "Meanwhile select, inspect, edit, pan, zoom and open scenes.")
     imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")
-    imgui.push_text_wrap_pos(0)
     imgui.text_colored(DIM, f"{app.warmup.elapsed():.0f} s: {label}")
     imgui.pop_text_wrap_pos()
     a, b = imgui.get_window_pos(), imgui.get_window_size()
     app.ui_rects["progress"] = (a.x, a.y, a.x + b.x, a.y + b.y)
     app.ui_values["progress"] = label
+    app.ui_values["progress_head"] = head
     imgui.end()
 
 
