@@ -388,13 +388,15 @@ class Warmup:
         """Kernels compiled so far for this launch's gate, in every process."""
         return sum(self._compiled(u) for u in self.todo)
 
-    def progress(self):
+    def progress(self, extra=()):
         """(fraction 0..1 of the open scene's kernels compiled, the work left and what the scene
-        waits for, in words: ``app.compile_progress``)."""
+        waits for, in words: ``app.compile_progress``).  ``extra``: units the open scene needs
+        beyond the gate (``app.scene_wait``), counted after it."""
         if self._ready:
-            return 1.0, "ready"
+            return self.mode_progress(list(extra)) if extra else (1.0, "ready")
         compiling = self._compiling()
-        frac, done, left, waiting = compile_progress.progress(self.todo, self._compiled, self._finished,
+        units = self.todo + [u for u in extra if u not in self.todo]
+        frac, done, left, waiting = compile_progress.progress(units, self._compiled, self._finished,
                                                               compiling, self.counts)
         return min(frac, 0.99), compile_progress.describe(done, left, waiting, loading=self._busy)
 

@@ -81,7 +81,7 @@ class Panels:
         self.dialogs.draw()
         self.context.draw()
         self.tools.drop()
-        if not app.warmup.ready:
+        if app.scene_wait.waiting(app.world):
             progress_window(app)
 
     def caption(self):

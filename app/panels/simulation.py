@@ -59,7 +59,7 @@ class SimulationSection(Section):
         The progress itself is the note above the scene (``notes.progress_window``): a second bar
         here said the same twice, and its lines pushed every field below down, to jump back up
         under the pointer once the kernels were in."""
-        if app.warmup.ready:
+        if not app.scene_wait.waiting(app.world):
             app.ui_values["play_state"] = "running" if sim.running else "paused"
             return
         app.ui_values["play_state"] = "waiting" if sim.running else "paused, compiling"

@@ -16,7 +16,7 @@ import pytest
 
 from sandbox_pixels import ROOT
 
-pytestmark = pytest.mark.app
+pytestmark = [pytest.mark.app, pytest.mark.slow]
 
 FRAME_BG = np.array([33, 38, 51])      # a field's and a progress bar's frame (app/panels/style.py)
 
