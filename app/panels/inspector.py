@@ -7,6 +7,7 @@ from imgui_bundle import imgui
 
 import physics
 
+from ..field_bounds import checked
 from .base import Section, record
 from .number_typing import typed
 from .fixture_inspector import body_text, draw_fixtures
@@ -63,7 +64,15 @@ class InspectorSection(Section):
                 ed.toggle_static()
 
     def edit(self, item, field, value):
-        self.app.editor.set_property(item, field, value)
+        """Set ``field`` (undoable), refusing beside the field a value out of its sane range."""
+        ed = self.app.editor
+        try:
+            value = checked(field, value)
+        except ValueError as exc:
+            ed.refuse(str(exc))
+            ed.notify(f"refused: {exc}", error=True)
+            return
+        ed.set_property(item, field, value)
 
     def set_mass(self, b, kg):
         """The body's mass through its density (mass = density x area): every fixture's density
@@ -98,10 +107,12 @@ class InspectorSection(Section):
             self.edit(b, "angle", math.radians(wrap_degrees(v)))
         ch, v = imgui.input_float2("velocity", list(b.velocity), "%.3f", ENTER)
         ch = typed(self.app, "velocity", ch)
+        record(self.app, "inspector:velocity")
         if ch:
             self.edit(b, "velocity", tuple(v))
         ch, v = imgui.input_double("angular vel.", b.angular_velocity, 0.5, 5.0, "%.3f", ENTER)
         ch = typed(self.app, "angular velocity", ch)
+        record(self.app, "inspector:angular_velocity")
         if ch:
             self.edit(b, "angular_velocity", v)
         ch, v = imgui.input_double("density", b.density, 0.1, 1.0, "%.3f", ENTER)
