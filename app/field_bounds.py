@@ -33,11 +33,20 @@ def within(label: str, value, lo: float, hi: float, unit: str):
 
 
 def checked(field: str, value, label: str | None = None):
-    """``value`` for the body or spring field ``field`` if within its LIMITS (fields without a
-    limit pass); ValueError in the user's terms otherwise."""
-    if field not in LIMITS:
+    """``value`` for the body, spring, joint or fixture field ``field`` if within its LIMITS, or
+    (fields without one) if its numbers are finite; ValueError in the user's terms otherwise."""
+    label = label or field.replace("_", " ")
+    if field in LIMITS:
+        return within(label, value, *LIMITS[field])
+    if value is None or isinstance(value, (str, bool)):
         return value
-    return within(label or field.replace("_", " "), value, *LIMITS[field])
+    try:
+        parts = [float(v) for v in np.atleast_1d(np.asarray(value, dtype=float))]
+    except (TypeError, ValueError):
+        return value                  # not a number: the core says what it takes
+    if all(math.isfinite(v) for v in parts):
+        return value
+    raise ValueError(f"{label}: must be a finite number (got {', '.join(map(_said, parts))})")
 
 
 def checked_gravity(g) -> tuple:

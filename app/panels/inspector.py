@@ -7,7 +7,6 @@ from imgui_bundle import imgui
 
 import physics
 
-from ..field_bounds import checked
 from .base import Section, record
 from .number_typing import typed
 from .fixture_inspector import body_text, draw_fixtures
@@ -64,15 +63,7 @@ class InspectorSection(Section):
                 ed.toggle_static()
 
     def edit(self, item, field, value):
-        """Set ``field`` (undoable), refusing beside the field a value out of its sane range."""
-        ed = self.app.editor
-        try:
-            value = checked(field, value)
-        except ValueError as exc:
-            ed.refuse(str(exc))
-            ed.notify(f"refused: {exc}", error=True)
-            return
-        ed.set_property(item, field, value)
+        self.app.editor.set_property(item, field, value)
 
     def set_mass(self, b, kg):
         """The body's mass through its density (mass = density x area): every fixture's density
