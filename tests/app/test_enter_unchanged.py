@@ -1,7 +1,8 @@
 """Enter in a number field that changes nothing is not an edit: a field left as it was, or emptied
-(imgui then keeps the old value, and shows it again), leaves the scene unsaved-free and adds no
-undo step.  (Each such Enter marked the scene edited, so opening another one asked about unsaved
-edits that did not exist.)  A real change still counts, and one undo takes it back."""
+(imgui then keeps the old value, and shows it again), leaves the scene unmarked and adds no undo
+step, and a value shown rounded is not set to its rounding by Enter alone.  (Each such Enter
+marked the scene edited, so opening another one asked about unsaved edits that did not exist.)
+A real change still counts, and one undo takes it back."""
 from __future__ import annotations
 
 import numpy as np
@@ -61,6 +62,12 @@ def test_enter_without_a_change_is_no_edit(launch, tmp_path):
     assert body(st, "b")["density"] == pytest.approx(1.0) and not st["dirty"]
     after = crop(app.screenshot("emptied_density"), density)
     assert np.abs(after - before).max() <= 8, "the emptied density does not show its value again"
+
+    # the angle is shown rounded (100 rad as "-30.42" deg): Enter alone must not set the rounding
+    angle = body(st, "b")["angle"]
+    st = enter(app, st["ui_rects"]["inspector:angle"])
+    st = app.settle()
+    assert body(st, "b")["angle"] == angle and not st["dirty"], (body(st, "b")["angle"], angle)
 
     # a real change is an edit, and the only one: one undo makes the scene clean again
     x0, y0, x1, y1 = rate
