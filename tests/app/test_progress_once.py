@@ -34,10 +34,13 @@ def stripped_cache(tmp_path, keep=lambda marker: False):
 
 
 def bar_bands(img, x0, y0, x1, y1) -> int:
-    """How many bands of rows in the rectangle are a progress bar: a frame at least 85 % as wide
-    as the rectangle (a number field's frame leaves room for its label; a bar spans the width)."""
+    """How many bands of rows in the rectangle are a progress bar: a frame, filled (yellow) or not,
+    at least 85 % as wide as the rectangle (a number field's frame leaves room for its label; a
+    bar spans the width)."""
     area = img[int(y0):int(y1), int(x0):int(x1)]
-    rows = np.mean(np.all(np.abs(area - FRAME_BG) <= 2, axis=-1), axis=1) >= 0.85
+    frame = np.all(np.abs(area - FRAME_BG) <= 2, axis=-1)
+    fill = (area[..., 0] > 200) & (area[..., 1] > 150) & (area[..., 2] < 80)
+    rows = np.mean(frame | fill, axis=1) >= 0.85
     return int(np.count_nonzero(rows[1:] & ~rows[:-1]) + rows[0])
 
 
