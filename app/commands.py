@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import time
 
+import numpy as np
+
 import physics
 
 from .fixture_specs import BODY_FIELDS, body_spec, make_body
@@ -85,6 +87,23 @@ class Command:
         raise NotImplementedError
 
     def merge(self, other) -> bool:
+        return False
+
+    def changes_nothing(self) -> bool:
+        """True for a setting set to the value it has (Enter in a field left as it was, or emptied:
+        imgui then keeps the old value): not an edit, so the scene is not marked unsaved."""
+        return False
+
+
+def same_value(a, b) -> bool:
+    """Would setting ``b`` where ``a`` is change nothing?  Numbers and vectors compare by value
+    (a tuple typed over a float32 array), anything else with ``==``."""
+    try:
+        x, y = np.asarray(a), np.asarray(b)
+        if x.dtype.kind in "biuf" and y.dtype.kind in "biuf":
+            return x.shape == y.shape and bool(np.array_equal(x, y))
+        return type(a) is type(b) and bool(a == b)
+    except (TypeError, ValueError):
         return False
 
 
@@ -234,6 +253,9 @@ class SetProperty(Command):
     def undo(self, app):
         setattr(self.ref.obj, self.field, self.old)
 
+    def changes_nothing(self) -> bool:
+        return same_value(self.old, self.new)
+
     def merge(self, other) -> bool:
         if (isinstance(other, SetProperty) and other.ref is self.ref and other.field == self.field
                 and other.t - self.t < 1.5):
@@ -259,6 +281,9 @@ class SetWorld(Command):
     def undo(self, app):
         self.setter(self.old)
 
+    def changes_nothing(self) -> bool:
+        return same_value(self.old, self.new)
+
     def merge(self, other) -> bool:
         if isinstance(other, SetWorld) and other.label == self.label and other.t - self.t < 1.5:
             self.new = other.new
@@ -283,6 +308,9 @@ class SetFixture(Command):
 
     def undo(self, app):
         setattr(self.ref.obj.fixtures[self.index], self.field, self.old)
+
+    def changes_nothing(self) -> bool:
+        return same_value(self.old, self.new)
 
     def merge(self, other) -> bool:
         if (isinstance(other, SetFixture) and other.ref is self.ref and (other.index, other.field) ==
@@ -322,7 +350,10 @@ class History:
         self._stamps = 0   # each user's edit (and each merge into one) gets a new stamp
 
     def execute(self, app, cmd: Command) -> None:
-        """Run a command and record it; a ValueError from the core leaves nothing recorded."""
+        """Run a command and record it; a ValueError from the core leaves nothing recorded, nor
+        does a setting that changes nothing."""
+        if cmd.changes_nothing():
+            return
         cmd.do(app)
         self.undone.clear()
         if self.done and self.done[-1].merge(cmd):

@@ -12,6 +12,7 @@ from .body_colors import SetColor, checked_rgb, from_metadata, to_metadata
 from .clipboard import Paste, copy_bodies, paste_offset, selected_bodies
 from .commands import Group, RemoveBodies, RemoveJoint, RemoveSpring, SetProperty, SetWorld
 from .document import Document
+from .field_bounds import checked
 from .lasers import Lasers
 from .picking import joint_near
 from .render.decor import Decor
@@ -141,7 +142,14 @@ class Editor:
             return False
 
     def set_property(self, item, field, value) -> bool:
-        """``item.field = value`` for a body, spring or joint, undoable; a refusal is shown, not raised."""
+        """``item.field = value`` for a body, spring or joint, undoable; a refusal (the sandbox's
+        bounds first: ``field_bounds``) is shown, not raised."""
+        try:
+            value = checked(field, value)
+        except ValueError as exc:
+            self.refuse(str(exc))
+            self.notify(f"refused: {exc}", error=True)
+            return False
         return self.try_edit(SetProperty(self, item, field, value), field)
 
     def try_edit(self, cmd, label: str) -> bool:

@@ -71,6 +71,8 @@ class Warmup:
         self.key = (self.solver, self.integrator, self.broadphase)
         self.narrow = compile_units.narrow_unit(world)
         self.cache = compile_units.cache_dir()
+        # nothing compiled into this cache yet: the progress may say "first launch only"
+        self.first_launch = self.cache is None or not any(self.cache.glob("unit-*.ok"))
         mine, theirs = compile_units.gate_units(*self.key, self.narrow)
         self.gate = mine + theirs     # loaded here once the scene can run (the last step loads them)
         self.final = "step:" + ":".join(self.key) + (":full" if self.narrow != "narrow" else "")
@@ -386,13 +388,15 @@ class Warmup:
         """Kernels compiled so far for this launch's gate, in every process."""
         return sum(self._compiled(u) for u in self.todo)
 
-    def progress(self):
+    def progress(self, extra=()):
         """(fraction 0..1 of the open scene's kernels compiled, the work left and what the scene
-        waits for, in words: ``app.compile_progress``)."""
+        waits for, in words: ``app.compile_progress``).  ``extra``: units the open scene needs
+        beyond the gate (``app.scene_wait``), counted after it."""
         if self._ready:
-            return 1.0, "ready"
+            return self.mode_progress(list(extra)) if extra else (1.0, "ready")
         compiling = self._compiling()
-        frac, done, left, waiting = compile_progress.progress(self.todo, self._compiled, self._finished,
+        units = self.todo + [u for u in extra if u not in self.todo]
+        frac, done, left, waiting = compile_progress.progress(units, self._compiled, self._finished,
                                                               compiling, self.counts)
         return min(frac, 0.99), compile_progress.describe(done, left, waiting, loading=self._busy)
 

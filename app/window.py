@@ -29,6 +29,7 @@ from .probes import Recorder
 from .panels import Panels, apply_style
 from .panels.notes import overlay_note, progress_window
 from .render import Overlays, Renderer
+from .scene_wait import SceneWait
 from .scenes import initial_world
 from .sensors import SensorView
 from .simulation import Simulation
@@ -83,6 +84,7 @@ class Sandbox(pyglet.window.Window):
         preview.hold(world)             # released by the first ready frame
         self.sim = Simulation(self.editor, self.warmup, self.notices, paused=paused, lock=lock)
         self.mode_switch = PendingSwitch(self.editor, self.warmup)   # a mode picked before it is compiled
+        self.scene_wait = SceneWait(self.warmup)  # what the open scene's steps wait for (the note)
         self.timeline = Timeline()                # snapshots while playing: the timeline slider
         self.timeline.mark_of = lambda: scrub_marks.mark(self.editor.doc)
         self.sim.after_step = self._after_step
@@ -305,14 +307,18 @@ class Sandbox(pyglet.window.Window):
     def draw_ui(self, ready):
         imgui.new_frame()
         self.panels.numbers.begin_frame()
+        self.ui_rects.pop("progress", None)       # drawn again below while the kernels compile
+        self.ui_values.pop("progress", None)
+        self.ui_values.pop("progress_head", None)
+        waiting = self.scene_wait.waiting(self.world)
         if self.show_ui:
             self.panels.draw()
-        elif not ready:
+        elif waiting:
             progress_window(self)         # the panels hidden (H): the wait is still said
         self.panels.numbers.end_frame()
         if ready:
             self.compare_view.labels()
-        if self.sim.compiling_note and ready:
+        if self.sim.compiling_note and not waiting:      # else the progress note says it
             overlay_note(self, self.sim.compiling_note)
         imgui.render()
         self.panels.hits.refresh()       # where the panels are now: the next events are routed by it

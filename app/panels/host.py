@@ -70,7 +70,6 @@ class Panels:
         app = self.app
         app.ui_rects.pop("main_window", None)
         app.ui_rects.pop("stats_window", None)
-        app.ui_rects.pop("progress", None)
         self.main_window()          # from the first frame: only stepping waits for the kernels
         self.solver.find.tick()
         if self.show_stats:
@@ -82,7 +81,7 @@ class Panels:
         self.dialogs.draw()
         self.context.draw()
         self.tools.drop()
-        if not app.warmup.ready:
+        if app.scene_wait.waiting(app.world):
             progress_window(app)
 
     def caption(self):

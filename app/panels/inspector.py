@@ -98,10 +98,12 @@ class InspectorSection(Section):
             self.edit(b, "angle", math.radians(wrap_degrees(v)))
         ch, v = imgui.input_float2("velocity", list(b.velocity), "%.3f", ENTER)
         ch = typed(self.app, "velocity", ch)
+        record(self.app, "inspector:velocity")
         if ch:
             self.edit(b, "velocity", tuple(v))
         ch, v = imgui.input_double("angular vel.", b.angular_velocity, 0.5, 5.0, "%.3f", ENTER)
         ch = typed(self.app, "angular velocity", ch)
+        record(self.app, "inspector:angular_velocity")
         if ch:
             self.edit(b, "angular_velocity", v)
         ch, v = imgui.input_double("density", b.density, 0.1, 1.0, "%.3f", ENTER)

@@ -41,8 +41,9 @@ def overlay_note(app, text):
 
 
 def progress_window(app):
-    """While the open scene's kernels compile: what stepping waits for and how much is left, at
-    the top of the free area (the panels beside it already work).  Clicks pass through it."""
+    """While the open scene's kernels compile (the launch's, then a scene's own mode): what
+    stepping waits for and how much is left, at the top of the free area (the panels beside it
+    already work).  Clicks pass through it."""
     x0, y0, x1, _ = app.free_rect()
     cap = app.ui_rects.get("caption")
     y = cap[3] + 4 if cap is not None else y0 + 14       # below the scene's caption, not over it
@@ -50,16 +51,20 @@ def progress_window(app):
     imgui.set_next_window_size(imgui.ImVec2(min(560.0, max(x1 - x0 - 16, 200.0)), 0), imgui.Cond_.always.value)
     imgui.set_next_window_bg_alpha(0.85)
     imgui.begin("##progress", None, NOTE_FLAGS & ~imgui.WindowFlags_.always_auto_resize.value)
-    frac, label = app.warmup.progress()
-    imgui.text_colored(AMBER, "Compiling the physics kernels (first launch only): stepping starts when done")
+    frac, label = app.scene_wait.progress(app.world)
+    # a later launch compiles only what a scene needs beyond the cache: not a "first launch"
+    head = ("Compiling the physics kernels (first launch only)" if app.warmup.first_launch
+            else "Compiling the kernels this scene needs (kept in the cache after)")
+    imgui.push_text_wrap_pos(0)
+    imgui.text_colored(AMBER, f"{head}: stepping starts when done")
     imgui.text_colored(DIM, "Meanwhile select, inspect, edit, pan, zoom and open scenes.")
     imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")
-    imgui.push_text_wrap_pos(0)
     imgui.text_colored(DIM, f"{app.warmup.elapsed():.0f} s: {label}")
     imgui.pop_text_wrap_pos()
     a, b = imgui.get_window_pos(), imgui.get_window_size()
     app.ui_rects["progress"] = (a.x, a.y, a.x + b.x, a.y + b.y)
     app.ui_values["progress"] = label
+    app.ui_values["progress_head"] = head
     imgui.end()
 
 

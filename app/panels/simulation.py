@@ -55,19 +55,17 @@ class SimulationSection(Section):
 
     @staticmethod
     def play_state(app, sim):
-        """Before the kernels are loaded the scene does not step: say so under Play, with the
-        progress (the work left, named), and that it plays by itself once compiled."""
-        if app.warmup.ready:
+        """Before the kernels are loaded the scene does not step: say so under Play, in one line.
+        The progress itself is the note above the scene (``notes.progress_window``): a second bar
+        here said the same twice, and its lines pushed every field below down, to jump back up
+        under the pointer once the kernels were in."""
+        if not app.scene_wait.waiting(app.world):
             app.ui_values["play_state"] = "running" if sim.running else "paused"
             return
         app.ui_values["play_state"] = "waiting" if sim.running else "paused, compiling"
-        frac, label = app.warmup.progress()
-        imgui.push_text_wrap_pos(0)
-        imgui.text_colored(AMBER, "Waiting for the kernels: plays when compiled" if sim.running
+        imgui.text_colored(AMBER, "Plays once the kernels are compiled" if sim.running
                            else "Paused; Play waits for the kernels")
-        imgui.progress_bar(frac, imgui.ImVec2(-1, 0), f"{100 * frac:.0f}%")
-        imgui.text_colored(DIM, label)
-        imgui.pop_text_wrap_pos()
+        record(app, "sim:play_state")
 
     @staticmethod
     def speed(sim):
