@@ -11,7 +11,9 @@ each with its own units; a later process loads them all from disk.
 
 Unit names: ``broad:<broadphase>``, ``narrow`` (lean), ``narrow:full``, ``solve:<mode>:<integrator>``,
 ``joints:<mode>:<integrator>``, ``guard``, ``frame``, ``extras`` (quadtree cells, shape casts),
-``coloured`` (soft_step's coloured layout) and ``step:<mode>:<integrator>:<broadphase>[:full][:joints]``
+``coloured`` (soft_step's coloured layout) and ``step:<mode>:<integrator>:<broadphase>[:full][:joints]``.
+``solve``, ``joints`` and ``step`` compile both a world with springs and one without (soft_step
+compiles its spring solve only for the first: store/optional.py), so adding a spring never waits
 (a whole step: whatever the others left, such as the one-call step's variant for a world with
 the whole narrow phase or with joints: physics/step/soft_driver.py).  The sandbox, CI (``python -m physics precompile``)
 and the tuner all go through here.
@@ -26,9 +28,10 @@ from . import options
 
 
 def probe_world(solver: str = options.DEFAULT_SOLVER, integrator: str = options.DEFAULT_INTEGRATOR,
-                broadphase: str = "brute"):
+                broadphase: str = "brute", springs: bool = True):
     """A small world with every body kind, both sharp shape kinds, polygons of two vertex counts
-    and a spring to the world, so each stage meets every argument type a scene can give it."""
+    and (``springs``) a spring to the world, so each stage meets every argument type a scene can
+    give it."""
     from . import Circle, Polygon, World
     w = World(solver=solver, integrator=integrator, broadphase=broadphase)
     w.add_body(Polygon.box(10, 1), kind="static", position=(0, -0.5))
@@ -38,7 +41,8 @@ def probe_world(solver: str = options.DEFAULT_SOLVER, integrator: str = options.
     w.add_body(Circle(0.4), position=(1.6, 1.3))
     hexa = w.add_body(Polygon.regular(6, 0.5), position=(-1.5, 0.45))
     w.add_body(Polygon.box(0.5, 0.5), kind="kinematic", position=(-3, 1), velocity=(0.1, 0))
-    w.add_spring(hexa, None, anchor_b=(-1.5, 2.0), stiffness=50.0, damping=0.5)
+    if springs:
+        w.add_spring(hexa, None, anchor_b=(-1.5, 2.0), stiffness=50.0, damping=0.5)
     return w
 
 
@@ -67,10 +71,11 @@ def _narrow(kind: str = "lean"):
 
 
 def _solve(solver, integrator):
-    w = probe_world(solver, integrator)
-    p = w._pipeline
-    p._refresh(w, w.dt)
-    p.solve(w, w.dt)
+    for springs in (False, True):
+        w = probe_world(solver, integrator, springs=springs)
+        p = w._pipeline
+        p._refresh(w, w.dt)
+        p.solve(w, w.dt)
 
 
 def _guard():
@@ -118,13 +123,15 @@ def _coloured():
 
 def _step(solver, integrator, bp, *flags):
     """Three whole steps of the probe world (``full``: with the whole narrow phase; ``joints``:
-    with a joint), so the one-call step's variant for such a world is compiled too."""
-    w = probe_world(solver, integrator, bp)
-    w._store.contacts.full = "full" in flags
-    if "joints" in flags:
-        w.add_joint("revolute", w.bodies[2], w.bodies[1], anchor=(0.1, 1.0))
-    for _ in range(3):
-        w.step()
+    with a joint), so the one-call step's variant for such a world is compiled too; with a
+    spring and without."""
+    for springs in (False, True):
+        w = probe_world(solver, integrator, bp, springs=springs)
+        w._store.contacts.full = "full" in flags
+        if "joints" in flags:
+            w.add_joint("revolute", w.bodies[2], w.bodies[1], anchor=(0.1, 1.0))
+        for _ in range(3):
+            w.step()
     w.render_data()
     w.contacts()
     w.query_point((0.0, 0.5))
@@ -132,19 +139,20 @@ def _step(solver, integrator, bp, *flags):
 
 def _joints(solver, integrator):
     """A step of the probe world with one joint of every kind the sandbox's tools make (and the
-    mouse drag's), so the joint stage of this mode is in the cache."""
-    w = probe_world(solver, integrator)
-    ground, box, top, disc = w.bodies[0], w.bodies[1], w.bodies[2], w.bodies[3]
-    w.add_joint("revolute", top, box, anchor=(0.1, 1.0), motor_speed=1.0, max_motor_torque=5.0)
-    w.add_joint("weld", box, ground, anchor=(0.0, 0.0))
-    w.add_joint("prismatic", top, None, anchor=(0.2, 1.5), axis=(0.0, 1.0), lower=-1.0, upper=1.0)
-    w.add_joint("distance", disc, None, anchor_b=(1.5, 3.0), max_length=3.0)
-    w.add_joint("wheel", box, w.bodies[4], anchor=(1.6, 1.3))
-    w.add_joint("motor", w.bodies[5], ground)
-    w.add_joint("mouse", w.bodies[4], None, target=(2.0, 2.0))
-    for k in range(3):  # the pipeline's stages once, then the one-call step where the mode has one
-        w._pipeline.one_call.enabled = k > 0
-        w.step()
+    mouse drag's), so the joint stage of this mode is in the cache; with a spring and without."""
+    for springs in (False, True):
+        w = probe_world(solver, integrator, springs=springs)
+        ground, box, top, disc = w.bodies[0], w.bodies[1], w.bodies[2], w.bodies[3]
+        w.add_joint("revolute", top, box, anchor=(0.1, 1.0), motor_speed=1.0, max_motor_torque=5.0)
+        w.add_joint("weld", box, ground, anchor=(0.0, 0.0))
+        w.add_joint("prismatic", top, None, anchor=(0.2, 1.5), axis=(0.0, 1.0), lower=-1.0, upper=1.0)
+        w.add_joint("distance", disc, None, anchor_b=(1.5, 3.0), max_length=3.0)
+        w.add_joint("wheel", box, w.bodies[4], anchor=(1.6, 1.3))
+        w.add_joint("motor", w.bodies[5], ground)
+        w.add_joint("mouse", w.bodies[4], None, target=(2.0, 2.0))
+        for k in range(3):  # the pipeline's stages once, then the one-call step where the mode has one
+            w._pipeline.one_call.enabled = k > 0
+            w.step()
 
 
 _UNITS = {"broad": _broad, "narrow": _narrow, "guard": _guard, "solve": _solve, "frame": _frame,

@@ -107,7 +107,7 @@ class OneCall:
                           ck.X, ck.Q, ck.V, ck.W, ck.bad, ck.why, ck.cluster, guard.start, guard.end,
                           tr.keys, tr._keys2, tr.begin, tr._begin2, tr._absent, tr._absent2,
                           isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, self._v0(len(mode.SB)),
-                          JF, JI, JW, JS, kinds,
+                          JF, JI, JW, JS, kinds, s.springs.arrays.flat[0] if s.springs.n else None,
                           1 if c.full else None)
         self._call = direct(soft_world_step, P)
 

@@ -5,7 +5,7 @@ fifty arrays would spend several microseconds at the boundary alone.  A numba St
 references to the same numpy arrays (no copy) and crosses the boundary as one object (about
 0.6 us whatever it holds), so the driver (driver.py) takes the pack and nothing else.
 
-Fields a world may lack (the joint tables, the whole narrow phase) are None; the pack's numba
+Fields a world may lack (the joint tables, the spring solve, the whole narrow phase) are None; the pack's numba
 type then differs and the driver compiled for it contains none of that code, as optional.py
 does for the kernels.  The Python side (one_call.py) builds a pack when the world's structure
 changes and keeps it between steps.
@@ -40,6 +40,8 @@ FIELDS = (
     "R", "SB", "V0",
     # joints (None without): table, scratch, global system, the joined bodies' kinds
     "JF", "JI", "JW", "JS", "kinds",
+    # the springs' float array again when the world has springs, for the solve (None without)
+    "SS",
     # the narrow phase's whole kernel (1) or only its lean one (None: collision/narrowphase/kernel.py)
     "full",
 )

@@ -22,7 +22,7 @@ from ..collision.narrowphase.kernel import collide_with, sort_pairs
 from ..constraints.joints.kinds import kinds_changed
 from ..solvers.soft_step.kernel import soft_step
 from ..store.flat import bodies_view, contacts_view, fixtures_view, springs_view, verts_view
-from ..store.optional import optional_joints
+from ..store.optional import optional_joints, optional_springs
 from .clock import cycles
 from .energy_bound import ACTIVE, guard_begin, guard_excess
 from .energy_sums import motor_power
@@ -140,8 +140,8 @@ def soft_world_step(P):
     T[3] = cycles()
     _scale_impulses(C, nc, D[D_CADOPT])
     _scale_joint_impulses(P.JF, P.JI, S[S_NJ], D[D_JADOPT])
-    S[S_BROKEN] = soft_step(P.ctx, P.par, B, C, Sp, P.R, P.SB, optional_joints(P.JF, P.JI), P.JW, P.JS,
-                              P.V0)
+    S[S_BROKEN] = soft_step(P.ctx, P.par, B, C, optional_springs(P.SS, P.SI), P.R, P.SB,
+                            optional_joints(P.JF, P.JI), P.JW, P.JS, P.V0)
     T[4] = cycles()
     if S[S_SLEEP]:
         links = _links(P.JF, P.JI, S[S_NJ], P.links)

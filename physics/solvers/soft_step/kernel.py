@@ -29,7 +29,7 @@ exactly (a 30-link chain whipping for 10 s: 0 mm against 3.4 mm) but removes
 energy: the relax pass takes out the velocity across the projected constraint
 (a double pendulum lost 30 % of its energy in 10 s; projecting once per step
 instead, 26 %), so it is off by default.  A world without joints passes None for all three and the kernel is
-compiled without them.
+compiled without them; one without springs passes None for ``S`` (store/optional.py).
 """
 from __future__ import annotations
 
@@ -47,8 +47,8 @@ from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
 from ...constraints.restitution_cluster import save_velocities
 from ...constraints.springs.substep import solve_springs
-from ...store.flat import bodies_view, contacts_view, springs_view
-from ...store.optional import optional_joints
+from ...store.flat import bodies_view, contacts_view
+from ...store.optional import optional_joints, optional_springs
 
 GLOBAL = 0  # index of "global" in the joint_solver setting's choices
 
@@ -95,7 +95,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             solve_contacts(c, p, SB, C, R, yes, yes)
             if J is not None:
                 solve_joints(c, B, J, JW, JS, yes, p.inv_h, eq_global)
-        if c.ns > 0:  # last before the move (module doc); the spring solver works on the body table
+        if S is not None and c.ns > 0:  # last before the move (module doc); on the body table
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
@@ -120,6 +120,8 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
 @kernel(entry=True, runtime=True)
 def soft_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, R, SB, JF, JI, JW, JS):
     """``soft_step`` over the body, contact, spring and joint tables' flat arrays (store/flat.py);
-    ``JF`` None: a world without joints (no joint code is compiled)."""
-    B, C, S = bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI)
-    return soft_step(ctx, par, B, C, S, R, SB, optional_joints(JF, JI), JW, JS, np.empty((ctx[0].n, 3)))
+    ``JF`` None: a world without joints, ``SF`` None: one without springs (neither's code is
+    compiled)."""
+    B, C = bodies_view(BF, BI), contacts_view(CF, CI, Cpt)
+    return soft_step(ctx, par, B, C, optional_springs(SF, SI), R, SB, optional_joints(JF, JI), JW, JS,
+                     np.empty((ctx[0].n, 3)))

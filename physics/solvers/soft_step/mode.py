@@ -97,8 +97,9 @@ class SoftStep(SolverMode):
         J, JW, JS = joint_args(store, par.get("h"), step, self.SB)
         if par.values["solver_layout"] == "rows":
             JF, JI = store.joints.arrays.flat if J is not None else (None, None)
+            SF, SI = store.springs.arrays.flat if store.springs.n else (None, None)
             broken = soft_step_flat(ctx.array, par.array, *store.bodies.arrays.flat, *c.cur_cols.flat,
-                                    *store.springs.arrays.flat, self.R, self.SB, JF, JI, JW, JS)
+                                    SF, SI, self.R, self.SB, JF, JI, JW, JS)
         else:
             if n + 2 > len(self.SB):  # and a spare row for the padding lanes
                 self._alloc(2 * n + 2)
