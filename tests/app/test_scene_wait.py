@@ -5,8 +5,9 @@ scene steps, and only then goes.  (It named only the launch scene's solver, then
 bare "compiling penalty ..." line while Play showed Pause over a scene that did not move.)
 
 The cache is a copy of the warm one with every unit marker gone (the launch's units load from
-numba's cache in seconds) and the penalty solver's kernels deleted (they compile for real, so
-the wait after the launch's units lasts)."""
+numba's cache in seconds) and the soft_step and penalty solvers' kernels deleted (they compile
+for real, so the launch is still compiling when the scene is opened, and the wait after the
+launch's units lasts)."""
 from __future__ import annotations
 
 import json
@@ -39,17 +40,27 @@ def open_from_list(app, path):
     app.settle()
     app.key("Escape")
     st = app.wait(lambda s: f"scene:{path}" in s["ui_rects"], 20, "the user's scenes listed")
-    x, y = centre(st["ui_rects"][f"scene:{path}"])
-    app.xdo("mousemove", x, y)
-    app.settle()
-    app.xdo("click", "--repeat", "2", "--delay", "80", "1")
-    return app.wait(lambda s: s["path"] == str(path), 30, f"{path.name} open")
+    for attempt in range(3):  # a person double-clicks again when the first one did not take
+        x, y = centre(app.status()["ui_rects"][f"scene:{path}"])
+        app.xdo("mousemove", x, y)
+        app.settle()
+        app.xdo("click", "--repeat", "2", "--delay", "80", "1")
+        try:
+            return app.wait(lambda s: s["path"] == str(path), 10, f"{path.name} open")
+        except AssertionError:
+            if attempt == 2:
+                raise
 
 
 def test_a_scene_opened_mid_compile_in_another_mode_is_waited_for_in_words(launch, tmp_path):
     env = stripped_cache(tmp_path)
-    for f in (tmp_path / "cache").glob("numba/*/penalty*"):
-        f.unlink()                           # penalty's own kernels compile for real
+    # penalty's own kernels compile for real (numba keeps each module's in a folder of its own)
+    # and so do soft_step's, so the launch is still compiling when the other scene is opened
+    gone = [f for f in (tmp_path / "cache").glob("numba/*/*/penalty*")]
+    gone += [f for f in (tmp_path / "cache").glob("numba/*/soft_step_*/*")]
+    assert gone, "no penalty kernels in the cache to delete"
+    for f in gone:
+        f.unlink()
     scene = penalty_scene(tmp_path / "data" / "stelkropp" / "scenes")
     app = launch(ROOT / "scenes" / "default.json", env=env)
     app.wait(lambda s: "main_window" in s.get("ui_rects", {}), 30, "the panels")
