@@ -24,7 +24,7 @@ import time
 
 from physics import options
 from physics.compile_units import (_marker, cache_dir, cached, mark, needs_full_narrowphase,  # noqa: F401
-                                   probe_world, run_unit)  # (the app's names)
+                                   probe_world, run_unit, step_integrator)  # (the app's names)
 
 
 def run(unit: str) -> None:

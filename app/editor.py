@@ -24,6 +24,7 @@ from .tracers import Tracers
 #: 1000 Hz a frame (at most 4 steps) covers under 7 ms of simulated time, a slide show
 STEP_RATE = (10.0, 1000.0)
 HINT_SECONDS = 5.0
+REFUSED = object()         # what Editor.bounded returns for a value out of its field's bounds
 MOTOR_PINS_MAX = 500      # more joints than this: motors are drawn as plain pins (a Python loop a frame)
 
 
@@ -137,18 +138,28 @@ class Editor:
             self.edit_error = ""
             return True
         except (ValueError, KeyError) as exc:
-            self.refuse(str(exc))
-            self.notify(f"refused: {exc}", error=True)
+            self.refused(exc)
             return False
+
+    def refused(self, exc) -> None:
+        """A refused edit: beside the field and as a message."""
+        self.refuse(str(exc))
+        self.notify(f"refused: {exc}", error=True)
+
+    def bounded(self, field, value):
+        """``value`` if the sandbox's bounds for ``field`` take it (``field_bounds.checked``), else
+        REFUSED, the refusal shown."""
+        try:
+            return checked(field, value)
+        except ValueError as exc:
+            self.refused(exc)
+            return REFUSED
 
     def set_property(self, item, field, value) -> bool:
         """``item.field = value`` for a body, spring or joint, undoable; a refusal (the sandbox's
-        bounds first: ``field_bounds``) is shown, not raised."""
-        try:
-            value = checked(field, value)
-        except ValueError as exc:
-            self.refuse(str(exc))
-            self.notify(f"refused: {exc}", error=True)
+        bounds first: ``bounded``) is shown, not raised."""
+        value = self.bounded(field, value)
+        if value is REFUSED:
             return False
         return self.try_edit(SetProperty(self, item, field, value), field)
 
@@ -284,6 +295,7 @@ class Editor:
         for cb in self.on_mode:
             cb(mode, w.integrator)
         self.notify(f"solver: {mode}")
+        self._say_unused_integrator()
 
     def set_integrator(self, name, now=False) -> bool:
         """The integrator (undoable), asking ``mode_gate`` first as ``switch_solver`` does."""
@@ -301,7 +313,19 @@ class Editor:
         w = self.world
         if getattr(w, attr) == value:
             return True
-        return self.set_world(attr, value, lambda v: setattr(w, attr, v), lambda: getattr(w, attr))
+        done = self.set_world(attr, value, lambda v: setattr(w, attr, v), lambda: getattr(w, attr))
+        if done and attr == "integrator":
+            self._say_unused_integrator()
+        return done
+
+    def _say_unused_integrator(self) -> None:
+        """Where the open mode integrates its own way, say that the integrator picked does nothing
+        in it (the core warns on the console; the user looks at the window)."""
+        w = self.world
+        if physics.solvers.unused_integrator(w.solver, w.integrator):
+            mode = physics.solvers.get(w.solver)
+            self.notify(f"{w.solver} does not use integrator {w.integrator}: it integrates its own way "
+                        f"({mode.integration[1]})")
 
     def set_step_rate(self, hz) -> bool:
         """The step rate in Hz (dt = 1/hz), within STEP_RATE; out of range is refused with a message."""

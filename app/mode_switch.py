@@ -178,7 +178,8 @@ class PendingSwitch:
         else:
             from physics.collision.broadphase import resolve
             bp = resolve(bp, w._store.fixtures.n)
-        return choice.get("solver", w.solver), choice.get("integrator", w.integrator), bp
+        solver = choice.get("solver", w.solver)
+        return solver, compile_units.step_integrator(solver, choice.get("integrator", w.integrator)), bp
 
     def _apply(self, choice) -> None:
         """Through the same undoable edits as a pick of a ready value; the mode last (its

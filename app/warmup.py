@@ -277,6 +277,7 @@ class Warmup:
                    first: bool = False) -> None:
         """Make this mode ready next (the user just switched to it); ``first``: before the other
         modes asked for (a comparison's rivals), since the user waits for this one."""
+        integrator = compile_units.step_integrator(solver, integrator)
         key = (solver, integrator, broadphase or self.broadphase)
         with self._cv:
             if key in self.warmed or (key in self._wanted and not first):
@@ -303,6 +304,7 @@ class Warmup:
                    joints: bool = False) -> list[str]:
         """The units a switch to this mode loads (``_serve``): its solver, the broad phase, its
         whole step and, for a world with joints, its joint stage."""
+        integrator = compile_units.step_integrator(solver, integrator)
         key = (solver, integrator, broadphase or self.broadphase)
         units = [f"solve:{solver}:{integrator}", f"broad:{key[2]}", "step:" + ":".join(key)]
         return units + ([compile_units.joints_unit(solver, integrator)] if joints else [])
@@ -354,6 +356,7 @@ class Warmup:
 
     def can_step(self, solver: str, integrator: str, broadphase: str | None = None) -> bool:
         """Are the kernels of this mode loaded here (a step will not stop to compile)?"""
+        integrator = compile_units.step_integrator(solver, integrator)
         return self._ready and (solver, integrator, broadphase or self.broadphase) in self.warmed
 
     @property

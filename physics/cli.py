@@ -335,6 +335,8 @@ def info(args) -> int:
     print(f"  bodies:     {data['bodies']} ({kinds})")
     print(f"  springs:    {data['springs']}")
     print(f"  solver:     {data['solver']}   integrator: {data['integrator']}   sleeping: {data['sleeping']}")
+    if data.get("integrator_note"):
+        print(f"              ({data['integrator_note']})")
     print(f"  gravity:    {list(world.gravity)}   dt: {world.dt:g} s")
     print("  settings:   " + ", ".join(f"{k}={v}" for k, v in data["settings"].items()))
     print("  stages:     " + " -> ".join(data["stages"]))

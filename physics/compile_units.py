@@ -168,6 +168,14 @@ def run_unit(unit: str) -> None:
     fn(*args)
 
 
+def step_integrator(solver: str, integrator: str) -> str:
+    """The integrator a step of ``solver`` compiles for: ``integrator`` where the mode uses the
+    world's setting, else the default (soft_step and sequential_impulse integrate their own way,
+    so their kernels are the same whatever the setting)."""
+    from . import solvers
+    return integrator if solvers.get(solver).uses_integrator else options.DEFAULT_INTEGRATOR
+
+
 def _integrators(solver: str) -> tuple:
     from . import solvers
     return options.INTEGRATORS if solvers.get(solver).uses_integrator else (options.DEFAULT_INTEGRATOR,)

@@ -6,6 +6,7 @@ names and handles, and hands each step to the pipeline (physics/step/).
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
@@ -122,6 +123,7 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         self.sleeping = sleeping
         if settings:
             self.settings.update(settings)
+        self._say_unused_integrator()
 
     # -- the store (for the sandbox, the benchmark and tests that look inside) ------------
     @property
@@ -269,6 +271,16 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         options.code(options.INTEGRATORS, name, "integrator")
         self._integrator = name
         self._pipeline.dirty = True
+        if hasattr(self, "_mode"):  # World() checks once its solver is set
+            self._say_unused_integrator()
+
+    def _say_unused_integrator(self) -> None:
+        """A UserWarning when the integrator set has no effect in the current mode (kept, since a
+        switch to a mode that uses it is allowed at any time; ``info()["integrator_used"]`` says
+        it too)."""
+        why = solvers.unused_integrator(self._solver_name, self._integrator)
+        if why is not None:
+            warnings.warn(why, UserWarning, stacklevel=3)
 
     @property
     def broadphase(self) -> str:

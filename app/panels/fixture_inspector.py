@@ -10,7 +10,7 @@ from imgui_bundle import imgui
 import physics
 
 from ..commands import SetFixture
-from ..field_bounds import checked
+from ..editor import REFUSED
 from ..gluing import glue_selection, unglue_selection
 from .base import record, record_window
 from .number_typing import typed
@@ -38,11 +38,8 @@ def body_text(b) -> str:
 
 def set_fixture(app, body, index, field, value) -> bool:
     ed = app.editor
-    try:
-        value = checked(field, value)
-    except ValueError as exc:
-        ed.refuse(str(exc))
-        ed.notify(f"refused: {exc}", error=True)
+    value = ed.bounded(field, value)
+    if value is REFUSED:
         return False
     return ed.try_edit(SetFixture(ed, body, index, field, value), f"fixture {index} {field}")
 

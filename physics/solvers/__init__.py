@@ -27,7 +27,7 @@ _REGISTRY = {
 assert tuple(_REGISTRY) == SOLVERS, "physics/options.py names the modes"
 _CACHE: dict[str, SolverMode] = {}
 
-__all__ = ["SolverMode", "available", "get"]
+__all__ = ["SolverMode", "available", "get", "unused_integrator"]
 
 
 def available() -> list[str]:
@@ -50,3 +50,14 @@ def get(name: str) -> SolverMode:
         mod, cls = _REGISTRY[name].split(":")
         _CACHE[name] = getattr(importlib.import_module(mod), cls)()
     return _CACHE[name]
+
+
+def unused_integrator(solver: str, integrator: str) -> str | None:
+    """Why ``integrator`` has no effect in ``solver``, in words, or None when it has one (the mode
+    uses the world's integrator, or ``integrator`` is how the mode integrates anyway)."""
+    mode = get(solver)
+    if mode.uses_integrator or integrator == mode.integration[0]:
+        return None
+    users = [n for n in _REGISTRY if n != solver and get(n).uses_integrator]
+    return (f"integrator {integrator!r} is not used by solver {solver!r}, which integrates its own way "
+            f"({mode.integration[1]}); the setting is kept for the modes that use it ({', '.join(users)})")

@@ -25,6 +25,8 @@ class SolverMode:
     record: dict | None = None
     #: the world's integrator setting applies to this mode
     uses_integrator: bool = False
+    #: how a mode that does not use the setting integrates: the integrator's name and in words
+    integration: tuple = ("symplectic_euler", "symplectic Euler")
 
     def derive(self, ctx, par, store) -> None:
         """Fill the derived fields of ``par`` for this step (called before ``step``)."""

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import options
+from .. import options, solvers
 from ..collision import broadphase, narrowphase
 from ..constraints.joints.work import joint_work
 from ..errors import SimulationError
@@ -302,6 +302,7 @@ class Pipeline:
         return {
             "bodies": n, **kinds, "awake": awake, "springs": store.springs.n, "joints": store.joints.n,
             "contacts": store.contacts.n, "solver": world.solver, "integrator": world.integrator,
+            "integrator_note": solvers.unused_integrator(world.solver, world.integrator) or "",
             "settings": dict(values), "sleeping": world.sleeping,
             "stages": stages,
         }

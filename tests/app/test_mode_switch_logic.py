@@ -7,6 +7,8 @@ An integrator or a broad phase picked before its kernels are loaded waits the sa
 with a pending mode."""
 from __future__ import annotations
 
+import pytest
+
 import physics
 
 from app.editor import Editor
@@ -54,15 +56,15 @@ class FakeWarmup:
         return 0.4, "~70 kernels left"
 
 
-def world():
+def world(solver="soft_step"):
     w = physics.World(gravity=(0, -10))
-    w.solver = "soft_step"
+    w.solver = solver
     w.add_body(physics.Polygon.box(1, 1), position=(0, 1))
     return w
 
 
-def setup(ready=("soft_step",), cold=()):
-    ed = Editor(world(), None, Notices(), camera=None)
+def setup(ready=("soft_step",), cold=(), solver="soft_step"):
+    ed = Editor(world(solver), None, Notices(), camera=None)
     warm = FakeWarmup(ready, cold)
     return ed, warm, PendingSwitch(ed, warm)
 
@@ -148,11 +150,11 @@ def test_a_mode_applied_another_way_cancels_it():
 
 
 def test_an_integrator_not_compiled_waits_and_applies_once_ready():
-    ed, warm, ms = setup(cold=("rk4",))
+    ed, warm, ms = setup(ready=("impulse",), cold=("rk4",), solver="impulse")  # a mode that uses it
     assert ed.world.integrator == "symplectic_euler"
     ed.set_integrator("rk4")
     assert ed.world.integrator == "symplectic_euler" and ms.integrator == "rk4" and ms.mode is None
-    assert ("soft_step", "rk4", "brute") in warm.first, "the picked combination is asked for first"
+    assert ("impulse", "rk4", "brute") in warm.first, "the picked combination is asked for first"
     assert not ed.doc.history.done, "nothing is an edit until it is applied"
     d = ms.describe()
     assert d["integrator"] == "rk4" and d["from_integrator"] == "symplectic_euler" and d["mode"] is None
@@ -189,8 +191,16 @@ def test_a_ready_integrator_or_broadphase_is_set_at_once():
     assert len(ed.doc.history.done) == 2
 
 
+def test_an_integrator_the_mode_does_not_use_applies_at_once_and_says_so():
+    ed, _, ms = setup(cold=("rk4",))          # soft_step integrates its own way: nothing to compile
+    with pytest.warns(UserWarning, match="not used by solver 'soft_step'"):
+        ed.set_integrator("rk4")
+    assert ed.world.integrator == "rk4" and not ms.active
+    assert any("soft_step does not use integrator rk4" in m[0] for m in ed.notices.items)
+
+
 def test_the_running_integrator_or_broadphase_cancels_it():
-    ed, warm, ms = setup(cold=("rk4", "quadtree"))
+    ed, warm, ms = setup(ready=("impulse",), cold=("rk4", "quadtree"), solver="impulse")
     ed.set_integrator("rk4")
     ed.set_broadphase("quadtree")
     assert ms.choice == {"integrator": "rk4", "broadphase": "quadtree"}

@@ -19,6 +19,7 @@ assert GLOBAL == _GLOBAL
 class SoftStep(SolverMode):
     name = "soft_step"
     description = "Sub-stepped soft contacts with relax and restitution passes (Box2D v3 style); the default."
+    integration = ("symplectic_euler", "symplectic Euler in sub-steps")
     settings = declare(
         Setting("substeps", 4, 1, 64, "sub-steps per step: more is stiffer and more accurate, and costs more"),
         Setting("iterations", 1, 1, 32, "biased contact passes per sub-step"),
