@@ -4,14 +4,12 @@ launch, minutes cold).  "Dragging did nothing while 'compiling the joints' showe
 progress note above the scene comes back for it, counting and naming the joint stage, Play says
 it waits, and once the body is let go the scene steps again at once.
 
-A copy of the warm cache without its unit markers and without the joint stage's kernels (they
-compile for real, so the joint stage is still compiling when the scene plays; the rest loads from
-numba's cache in seconds, where a cold cache took minutes)."""
+A cold cache of the test's own, so that the joint stage is still compiling when the scene plays."""
 from __future__ import annotations
 
 import pytest
 
-from test_progress_once import bar_bands, stripped_cache
+from test_progress_once import bar_bands
 from test_text_fields import fields_scene
 from test_tools import body
 
@@ -19,12 +17,9 @@ pytestmark = [pytest.mark.app, pytest.mark.slow]
 
 
 def test_a_drag_waiting_for_the_joint_stage_says_so(launch, tmp_path):
-    env = stripped_cache(tmp_path)
-    gone = [f for folder in ("joints_*", "system_*") for f in (tmp_path / "cache").glob(f"numba/*/{folder}/*")]
-    assert gone, "no joint kernels in the cache to delete"
-    for f in gone:
-        f.unlink()
-    app = launch(fields_scene(tmp_path / "fields.json"), env=env)
+    cold = tmp_path / "empty-cache"
+    app = launch(fields_scene(tmp_path / "fields.json"),
+                 env={"STELKROPP_CACHE_DIR": str(cold), "NUMBA_CACHE_DIR": str(cold / "numba")})
     st = app.wait_ready(10, joints=False)
     assert not st["joints_ready"], "the joint stage cannot be compiled this soon"
     assert "progress" not in st["ui_rects"] and st["ui_values"]["play_state"] == "running"

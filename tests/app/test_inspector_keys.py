@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from sandbox_pixels import red_text_pixels
-from test_text_fields import fields_scene, type_into
+from test_text_fields import fields_scene, select_body, type_into
 from test_tools import body
 
 pytestmark = pytest.mark.app
@@ -17,9 +17,7 @@ FIELDS = ("inspector:density", "inspector:angle")
 def test_refusals_keep_the_fields_in_place_and_keys_out_of_the_scene(launch, tmp_path):
     app = launch(fields_scene(tmp_path / "fields.json"), "--paused")
     st = app.wait_ready(10)
-    b = body(st, "b")
-    app.click(*map(int, b["screen"]))
-    st = app.wait(lambda s: s["selection"] == [b["id"]] and "inspector:density" in s["ui_rects"], 10, "b selected")
+    st = select_body(app, st)
     st = app.settle()
     before = {k: st["ui_rects"][k] for k in FIELDS}
     overlays = st["overlays"]

@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 
 from test_number_typing import refused_beside
-from test_text_fields import fields_scene, type_into
+from test_text_fields import fields_scene, select_body, type_into
 from test_tools import body
 
 pytestmark = [pytest.mark.app, pytest.mark.slow]
@@ -17,9 +17,7 @@ pytestmark = [pytest.mark.app, pytest.mark.slow]
 def test_velocity_and_spin_refused_in_the_users_terms(launch, tmp_path):
     app = launch(fields_scene(tmp_path / "fields.json"), "--paused")
     st = app.wait_ready(10)
-    b = body(st, "b")
-    app.click(*map(int, b["screen"]))
-    st = app.wait(lambda s: s["selection"] == [b["id"]] and "inspector:velocity" in s["ui_rects"], 10, "b selected")
+    st = select_body(app, st, field="inspector:velocity")
     st = app.settle()
     type_into(app, st["ui_rects"]["inspector:velocity"], "1e300")
     st = app.wait(lambda s: s["edit_error"].startswith("velocity:"), 10, "the velocity refusal")

@@ -7,7 +7,7 @@ import pytest
 
 from sandbox_pixels import red_text_pixels
 from test_compare import centre
-from test_text_fields import fields_scene, type_into
+from test_text_fields import fields_scene, select_body, type_into
 from test_tools import body
 
 pytestmark = pytest.mark.app
@@ -48,9 +48,7 @@ def test_letters_in_number_fields_are_refused_beside_the_field(launch, tmp_path)
     st = app.wait(lambda s: s["edit_error"].startswith('time scale: "fast"'), 10, "the time scale refusal")
     assert app.settle()["time_scale"] == pytest.approx(1.0)
     # the inspector's fields say it too, with their own name
-    b = body(st, "b")
-    app.click(*map(int, b["screen"]))
-    st = app.wait(lambda s: s["selection"] == [b["id"]] and "inspector:density" in s["ui_rects"], 10, "b selected")
+    st = select_body(app, st)
     st = app.settle()
     type_into(app, st["ui_rects"]["inspector:density"], "abc")
     st = app.wait(lambda s: s["edit_error"].startswith('density: "abc"'), 10, "the density refusal")

@@ -47,12 +47,18 @@ def type_into(app, rect, text, select_all=True):
     app.key("Return")
 
 
+def select_body(app, st, name="b", field="inspector:density"):
+    """Click body ``name`` as a user would and wait until it is selected and the inspector shows
+    ``field``; the status then."""
+    b = body(st, name)
+    app.click(*map(int, b["screen"]))
+    return app.wait(lambda s: s["selection"] == [b["id"]] and field in s["ui_rects"], 10, f"{name} selected")
+
+
 def test_ctrl_a_focus_angles_and_labels(launch, tmp_path):
     app = launch(fields_scene(tmp_path / "fields.json"), "--paused")
     st = app.wait_ready(10)
-    b = body(st, "b")
-    app.click(*map(int, b["screen"]))
-    st = app.wait(lambda s: s["selection"] == [b["id"]] and "inspector:density" in s["ui_rects"], 10, "b selected")
+    st = select_body(app, st)
     # the angle is shown wrapped into [-180, 180] (100 rad = 5729.6 deg)
     shown = st["ui_values"]["inspector:angle"]
     assert -180.0 <= shown <= 180.0 and shown == pytest.approx(math.remainder(math.degrees(100.0), 360.0), abs=1e-6)
