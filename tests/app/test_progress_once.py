@@ -13,7 +13,7 @@ import shutil
 import numpy as np
 import pytest
 
-from physics._jit import _cache_root
+from physics.compile_units import cache_dir
 from sandbox_pixels import ROOT
 
 pytestmark = [pytest.mark.app, pytest.mark.slow]
@@ -24,14 +24,16 @@ FRAME_BG = np.array([33, 38, 51])      # a field's and a progress bar's frame (a
 def stripped_cache(tmp_path, keep=lambda marker: False):
     """A copy of the warm cache whose unit markers are gone except those ``keep`` keeps; the env
     that points a sandbox at it."""
-    cache = tmp_path / "cache"
-    # the cache the suite compiled into: STELKROPP_CACHE_DIR, else the user's (XDG) cache, as CI has
-    shutil.copytree(_cache_root(), cache, ignore=shutil.ignore_patterns("*.lock"))
-    for m in cache.glob("numba/*/unit-*.ok"):
+    # the cache the suite compiled into, for this version of physics/ only: a user's (or CI's)
+    # cache also keeps older versions' folders, whose markers name other kernels
+    here = cache_dir()
+    assert here is not None and any(here.glob("unit-*.ok")), f"no compiled units in {here}"
+    numba_dir = tmp_path / "cache" / "numba" / here.name
+    shutil.copytree(here, numba_dir, ignore=shutil.ignore_patterns("*.lock"))
+    for m in numba_dir.glob("unit-*.ok"):
         if not keep(m.name):
             m.unlink()
-    numba_dir = next(p for p in cache.glob("numba/*") if p.is_dir())
-    return {"STELKROPP_CACHE_DIR": str(cache), "NUMBA_CACHE_DIR": str(numba_dir)}
+    return {"STELKROPP_CACHE_DIR": str(tmp_path / "cache"), "NUMBA_CACHE_DIR": str(numba_dir)}
 
 
 def bar_bands(img, x0, y0, x1, y1) -> int:
