@@ -32,6 +32,7 @@ from ...constraints.contact_rigid import contact_bias, restitution_points, solve
 from ...constraints.point import prepare_points, zero_impulses
 from ...constraints.split_impulse import integrate_pseudo, reset_pseudo, solve_split, zero_rows
 from ...constraints.joints.dispatch import store_joints
+from ...constraints.joints.pivot import cap_table_about_pivots, save_pivots
 from ...constraints.joints.position import correct_joint_positions
 from ...constraints.joints.table_passes import begin_table_joints, table_joint_pass
 from ...constraints.springs.substep import solve_springs
@@ -65,6 +66,7 @@ def si_step(ctx, par, B, C, S, W, M, J, JW, JS):
     eq_global = p.joint_solver == GLOBAL
     if J is not None:
         begin_table_joints(c, B, J, JW, dt, p.warm_starting)
+        save_pivots(c, B, J, JW)
     contact_bias(C, nc, W, inv_dt, p.baumgarte, p.linear_slop, MAX_PUSH, p.position_correction == BAUMGARTE)
     warm_start_points(B, C, nc, W)
     for _ in range(p.velocity_iterations):
@@ -72,6 +74,8 @@ def si_step(ctx, par, B, C, S, W, M, J, JW, JS):
         if J is not None:
             table_joint_pass(c, B, J, JW, JS, inv_dt, eq_global)
     reset_displacements(n, M.DP, M.DQ, M.DC, M.DS)
+    if J is not None:
+        cap_table_about_pivots(JW.PV, n, B, dt)
     integrate_positions(B, n, dt, M.DP, M.DQ, M.DC, M.DS)
     # after the move, so a speculative hit bounces at the wall rather than a gap away from it
     restitution_points(B, C, nc, W, p.restitution_threshold)

@@ -21,6 +21,7 @@ from ...constraints.contact_soft import prepare_contacts, store_impulses
 from ...constraints.contact_wide import pack, repack_normal, unpack
 from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
+from ...constraints.joints.pivot import cap_about_pivots, save_pivots
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
@@ -56,6 +57,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             zero_joint_impulses(J, c.nj)
         prepare_joints(c, B, J, JW, h, p.soft_joint[0], p.soft_joint[1], p.soft_joint[2])
         save_start(B, n, JW.X0, JW.Q0)
+        save_pivots(c, B, J, JW)
     eq_global = p.joint_solver == GLOBAL
     project = J is not None and eq_global and p.joint_projection and JS.dims[0] > 0
     bouncy = False
@@ -81,6 +83,8 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
+        if J is not None:
+            cap_about_pivots(JW.PV, n, SB, h)
         integrate_row_positions(B, n, SB, h)
         if project:
             refresh_rows(c, B, J, JW)

@@ -42,6 +42,7 @@ from ...constraints.contact_restitution import restitution_contacts
 from ...constraints.contact_soft import prepare_contacts, solve_contacts, store_impulses, warm_start_contacts
 from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
+from ...constraints.joints.pivot import cap_about_pivots, save_pivots
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
@@ -76,6 +77,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             zero_joint_impulses(J, c.nj)
         prepare_joints(c, B, J, JW, h, p.soft_joint[0], p.soft_joint[1], p.soft_joint[2])
         save_start(B, n, JW.X0, JW.Q0)
+        save_pivots(c, B, J, JW)
     eq_global = p.joint_solver == GLOBAL
     project = J is not None and eq_global and p.joint_projection and JS.dims[0] > 0
     iterations = p.iterations
@@ -99,6 +101,8 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
+        if J is not None:
+            cap_about_pivots(JW.PV, n, SB, h)
         integrate_row_positions(B, n, SB, h)
         if project:
             refresh_rows(c, B, J, JW)
