@@ -4,8 +4,9 @@ compound body falls apart into one body per fixture (issue 13).  Both are undoab
 
 The springs and joints on the bodies stay: each end moves onto the body that replaces its own,
 at the same world anchor (app.reattach).  One between two bodies glued together would hold the
-compound to itself: it is dropped, and the notice and the undo text say so.  Undo removes the
-new bodies and brings back the old ones with their springs and joints exactly as they were.
+compound to itself: it is dropped, and the notice and the undo text say so.  The tracers and
+lasers on the bodies move the same way, keeping their world points.  Undo removes the new bodies
+and brings back the old ones with their springs, joints, tracers and lasers exactly as they were.
 """
 from __future__ import annotations
 
@@ -31,6 +32,7 @@ class _Reattaching(Command):
         self.remove = RemoveBodies(app, bodies)
         self.adds = adds
         self.kept = []                  # the Refs of the springs and joints remade
+        self.marks = []                 # (tracer or laser, its ref, local point, angle, index) moved
         self.dropped = {"spring": 0, "joint": 0}
 
     def place(self, ref, p):
@@ -44,6 +46,7 @@ class _Reattaching(Command):
                 a.do(app)
                 done.append(a)
             self._remake(app)
+            self._move_marks(app)
         except ValueError:
             self._unmake(app)
             for a in reversed(done):
@@ -63,6 +66,31 @@ class _Reattaching(Command):
                 app.refs.rebind(ref, make(app.world, new))
                 self.kept.append(ref)
 
+    def _move_marks(self, app):
+        """The tracers and lasers on a removed body go onto its replacement at the same world
+        point (an emitter shining the same world direction), as the springs and joints do: left
+        on the removed body, a trail would stop and a beam vanish.  ``undo`` puts them back."""
+        removed = {id(r) for r in self.remove.refs}
+        self.marks = []
+        for item in [*app.tracers.items, *app.lasers.items]:
+            pl = self.place(item.ref, item.local) if id(item.ref) in removed else None
+            if pl is None:
+                continue
+            angle = getattr(item, "angle", None)
+            self.marks.append((item, item.ref, item.local, angle, item.index))
+            item.ref, item.local = pl.ref, tuple(map(float, pl.rot @ np.asarray(item.local) + pl.off))
+            if angle is not None:
+                item.angle = angle + pl.turn
+            new_id = pl.ref.obj.id
+            item.index = next((k for k, b in enumerate(app.world.bodies) if b.id == new_id), item.index)
+
+    def _unmove_marks(self):
+        for item, ref, local, angle, index in reversed(self.marks):
+            item.ref, item.local, item.index = ref, local, index
+            if angle is not None:
+                item.angle = angle
+        self.marks = []
+
     def _unmake(self, app):
         for ref in reversed(self.kept):
             if ref.obj.alive:
@@ -71,6 +99,7 @@ class _Reattaching(Command):
         self.kept = []
 
     def undo(self, app):
+        self._unmove_marks()
         self._unmake(app)
         for a in reversed(self.adds):
             a.undo(app)

@@ -273,12 +273,19 @@ class Warmup:
             self.counts.save({u: self._compiled(u) for u in self.mode_units(*key)})
 
     # -- what the window asks --------------------------------------------------------
+    def _mode_key(self, solver: str, integrator: str,
+                  broadphase: str | None = None) -> tuple[str, str, str]:
+        """(solver, integrator, broad phase) as the compile units name a mode: the integrator as
+        the mode steps with it (a mode that integrates its own way ignores the setting), the open
+        scene's broad phase unless given."""
+        return (solver, compile_units.step_integrator(solver, integrator),
+                broadphase or self.broadphase)
+
     def prioritize(self, solver: str, integrator: str, broadphase: str | None = None,
                    first: bool = False) -> None:
         """Make this mode ready next (the user just switched to it); ``first``: before the other
         modes asked for (a comparison's rivals), since the user waits for this one."""
-        integrator = compile_units.step_integrator(solver, integrator)
-        key = (solver, integrator, broadphase or self.broadphase)
+        key = self._mode_key(solver, integrator, broadphase)
         with self._cv:
             if key in self.warmed or (key in self._wanted and not first):
                 return
@@ -304,9 +311,9 @@ class Warmup:
                    joints: bool = False) -> list[str]:
         """The units a switch to this mode loads (``_serve``): its solver, the broad phase, its
         whole step and, for a world with joints, its joint stage."""
-        integrator = compile_units.step_integrator(solver, integrator)
-        key = (solver, integrator, broadphase or self.broadphase)
-        units = [f"solve:{solver}:{integrator}", f"broad:{key[2]}", "step:" + ":".join(key)]
+        key = self._mode_key(solver, integrator, broadphase)
+        solver, integrator, bp = key
+        units = [f"solve:{solver}:{integrator}", f"broad:{bp}", "step:" + ":".join(key)]
         return units + ([compile_units.joints_unit(solver, integrator)] if joints else [])
 
     def mode_progress(self, units: list[str]):
@@ -356,8 +363,7 @@ class Warmup:
 
     def can_step(self, solver: str, integrator: str, broadphase: str | None = None) -> bool:
         """Are the kernels of this mode loaded here (a step will not stop to compile)?"""
-        integrator = compile_units.step_integrator(solver, integrator)
-        return self._ready and (solver, integrator, broadphase or self.broadphase) in self.warmed
+        return self._ready and self._mode_key(solver, integrator, broadphase) in self.warmed
 
     @property
     def ready(self) -> bool:

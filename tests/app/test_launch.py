@@ -262,3 +262,28 @@ def test_a_rival_mode_loads_while_the_scene_steps(monkeypatch):
             break
         threading.Event().wait(0.01)
     assert w.can_step("impulse", w.integrator)
+
+
+def test_the_three_mode_questions_name_a_mode_alike(monkeypatch):
+    """``prioritize``, ``mode_units`` and ``can_step`` agree on a mode's key: an integrator setting
+    a mode does not use (soft_step integrates its own way) names the mode's default-integrator
+    kernels, and the broad phase is the open scene's unless given."""
+    import threading
+
+    import physics
+    from app import compile_units
+    from app.warmup import Warmup
+    monkeypatch.setattr(compile_units, "cached", lambda unit: False)
+    w = Warmup(physics.load_scene(ROOT / "scenes" / "default.json"), threading.Lock(), helper=False)
+    default = physics.options.DEFAULT_INTEGRATOR
+    other = next(i for i in physics.options.INTEGRATORS if i != default)
+    assert w.mode_units("soft_step", other) == w.mode_units("soft_step", default)
+    assert w.mode_units("impulse", other) != w.mode_units("impulse", default)
+    assert f"broad:{w.broadphase}" in w.mode_units("impulse", other)
+    w._ready = True
+    w.warmed.add(("soft_step", default, w.broadphase))
+    assert w.can_step("soft_step", other) and not w.can_step("impulse", other)
+    w.prioritize("soft_step", other)
+    assert not w._wanted, "a loaded mode is not asked for again"
+    w.prioritize("impulse", other, first=True)
+    assert w._wanted == [("impulse", other, w.broadphase)]
