@@ -60,12 +60,13 @@ def _die_with_parent() -> None:
 
 
 def hold(unit: str) -> None:
-    """Wait before ``unit`` while a hold asks for it: ``STELKROPP_HOLD="<prefix>:<file>"`` holds
-    every unit whose name starts with ``prefix`` for as long as ``file`` exists.  A compile that
-    loads from a warm cache takes seconds, one from a cold cache minutes: the window tests hold a
-    unit to see, for certain and without the minutes, what the sandbox shows while it waits."""
-    prefix, _, path = os.environ.get("STELKROPP_HOLD", "").partition(":")
-    if prefix and path and unit.startswith(prefix):
+    """Wait before ``unit`` while a hold asks for it: ``STELKROPP_HOLD="<prefix>,<prefix>...:<file>"``
+    holds every unit whose name starts with one of the prefixes for as long as ``file`` exists.  A
+    compile that loads from a warm cache takes seconds, one from a cold cache minutes: the window
+    tests hold units to see, for certain and without the minutes, what the sandbox shows while it
+    waits for them."""
+    prefixes, _, path = os.environ.get("STELKROPP_HOLD", "").rpartition(":")
+    if path and any(p and unit.startswith(p) for p in prefixes.split(",")):
         while os.path.exists(path):
             time.sleep(0.1)
 
