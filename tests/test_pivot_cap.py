@@ -1,5 +1,5 @@
 """The rotation cap of a body held by a joint keeps the joint's anchor on its path
-(physics/constraints/joints/pivot.py).
+(physics/constraints/rotation_cap.py, joints/pivot.py).
 
 A bob on a 1.1 m rod pinned to the world, spun at 976 rad/s (14 rad per sub-step at dt 0.0588 s,
 far past the cap of pi/4 per sub-step), with no gravity: a rigid pendulum keeps its energy, and a
@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import physics
-from physics.constraints.joints.pivot import capped
+from physics.constraints.rotation_cap import capped
 
 MODES = ["soft_step", "sequential_impulse"]
 

@@ -14,11 +14,10 @@ import math
 
 from .._jit import kernel
 from ..store import DYNAMIC, STATIC
+from .rotation_cap import MAX_ROTATION, cap_about_pivot
 
 VX, VY, W, IM, II, DPX, DPY, DCOS, DSIN = range(9)
 NB = 9
-# rotation per sub-step is capped so a spinning sliver cannot tunnel through its own contacts
-MAX_ROTATION = 0.25 * math.pi
 SMALL_ROTATION = 0.05  # below this (rad per sub-step) sin/cos of the increment by series
 
 
@@ -65,9 +64,10 @@ def integrate_row_velocities(B, n, SB, gx, gy, h):
 
 
 @kernel
-def integrate_row_positions(B, n, SB, h):
+def integrate_row_positions(B, n, SB, h, PV, npv):
     """x += h v, q += h w with the rows' velocities (rotation per sub-step capped at
-    MAX_ROTATION); accumulates the displacement since the step began.
+    MAX_ROTATION, about a joint's anchor for the first ``npv`` bodies: joints/pivot.py);
+    accumulates the displacement since the step began.
 
     B.q advances by exactly h w; the displacement's (cos, sin) is composed with
     the increment's rotation, whose sin and cos for |h w| < SMALL_ROTATION come
@@ -79,7 +79,9 @@ def integrate_row_positions(B, n, SB, h):
             continue
         w = SB[i, W]
         if abs(w * h) > MAX_ROTATION:
-            w = math.copysign(MAX_ROTATION / h, w)
+            vx, vy, w = cap_about_pivot(PV, npv, i, B.q[i], SB[i, VX], SB[i, VY], w, SB[i, IM], SB[i, II], h)
+            SB[i, VX] = vx
+            SB[i, VY] = vy
             SB[i, W] = w
         dx = h * SB[i, VX]
         dy = h * SB[i, VY]

@@ -27,12 +27,14 @@ Newton step on each structure's joint equations per pass).
 """
 from __future__ import annotations
 
+import numpy as np
+
 from ..._jit import kernel
 from ...constraints.contact_rigid import contact_bias, restitution_points, solve_points, warm_start_points
 from ...constraints.point import prepare_points, zero_impulses
 from ...constraints.split_impulse import integrate_pseudo, reset_pseudo, solve_split, zero_rows
 from ...constraints.joints.dispatch import store_joints
-from ...constraints.joints.pivot import cap_table_about_pivots, save_pivots
+from ...constraints.joints.pivot import save_pivots
 from ...constraints.joints.position import correct_joint_positions
 from ...constraints.joints.table_passes import begin_table_joints, table_joint_pass
 from ...constraints.springs.substep import solve_springs
@@ -74,9 +76,10 @@ def si_step(ctx, par, B, C, S, W, M, J, JW, JS):
         if J is not None:
             table_joint_pass(c, B, J, JW, JS, inv_dt, eq_global)
     reset_displacements(n, M.DP, M.DQ, M.DC, M.DS)
-    if J is not None:
-        cap_table_about_pivots(JW.PV, n, B, dt)
-    integrate_positions(B, n, dt, M.DP, M.DQ, M.DC, M.DS)
+    if JW is None:  # no joints, no pivots (numba prunes the other branch for a None type)
+        integrate_positions(B, n, dt, M.DP, M.DQ, M.DC, M.DS, M.DP, np.int64(0))
+    else:
+        integrate_positions(B, n, dt, M.DP, M.DQ, M.DC, M.DS, JW.PV, np.int64(n if J is not None else 0))
     # after the move, so a speculative hit bounces at the wall rather than a gap away from it
     restitution_points(B, C, nc, W, p.restitution_threshold)
     if p.position_correction == SPLIT and p.position_iterations > 0:

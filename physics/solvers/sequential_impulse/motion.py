@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from ..._jit import kernel
-from ...constraints.body_rows import MAX_ROTATION
+from ...constraints.rotation_cap import MAX_ROTATION, cap_about_pivot
 from ...store import DYNAMIC, STATIC
 
 
@@ -26,14 +26,17 @@ def integrate_velocities(B, n, gx, gy, h):
 
 
 @kernel
-def integrate_positions(B, n, h, DP, DQ, DC, DS):
-    """x += h v, q += h w; accumulates the displacement since the step began."""
+def integrate_positions(B, n, h, DP, DQ, DC, DS, PV, npv):
+    """x += h v, q += h w; accumulates the displacement since the step began.  The cap turns the
+    first ``npv`` bodies about a joint's anchor (constraints/joints/pivot.py)."""
     for i in range(n):
         if B.kind[i] == STATIC or B.awake[i] == 0:
             continue
         w = B.w[i]
         if abs(w * h) > MAX_ROTATION:
-            w = math.copysign(MAX_ROTATION / h, w)
+            vx, vy, w = cap_about_pivot(PV, npv, i, B.q[i], B.v[i, 0], B.v[i, 1], w, B.inv_m[i], B.inv_i[i], h)
+            B.v[i, 0] = vx
+            B.v[i, 1] = vy
             B.w[i] = w
         dx = h * B.v[i, 0]
         dy = h * B.v[i, 1]

@@ -42,7 +42,7 @@ from ...constraints.contact_restitution import restitution_contacts
 from ...constraints.contact_soft import prepare_contacts, solve_contacts, store_impulses, warm_start_contacts
 from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
-from ...constraints.joints.pivot import cap_about_pivots, save_pivots
+from ...constraints.joints.pivot import save_pivots
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
@@ -101,9 +101,10 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
-        if J is not None:
-            cap_about_pivots(JW.PV, n, SB, h)
-        integrate_row_positions(B, n, SB, h)
+        if JW is None:  # no joints, no pivots (numba prunes the other branch for a None type)
+            integrate_row_positions(B, n, SB, h, SB, np.int64(0))
+        else:
+            integrate_row_positions(B, n, SB, h, JW.PV, np.int64(n if J is not None else 0))
         if project:
             refresh_rows(c, B, J, JW)
             correct_system(B, JW, JS, 1.0)
