@@ -11,7 +11,10 @@ import math
 from .._jit import kernel
 
 MAX_ROTATION = 0.25 * math.pi
-PX, PY, RANK = range(3)  # a pivot row: the anchor in the body's frame (from its centre of mass), its rank
+# a body's pivot in its per-body scratch row (columns 0-2 are soft_step's sub-step start velocities):
+# the anchor in the body's frame (from its centre of mass) and its rank
+PX, PY, RANK = 3, 4, 5
+PIVOT_COLUMNS = 6  # the scratch's width
 
 
 @kernel

@@ -13,20 +13,44 @@ import time
 
 import numpy as np
 
+from .._jit import direct
 from ..collision import broadphase
 from ..collision.broadphase.limit import check_pairs
 from ..collision.narrowphase.kernel import manifold_scratch
 from ..constraints.joints.work import after_step, joint_work
-from .._jit import direct
+from ..constraints.rotation_cap import PIVOT_COLUMNS
 from ..errors import SimulationError
 from ..solvers.soft_step.layout import LAYOUTS
 from ..store.table import GENERATION
 from . import soft_driver as drv
 from .energy_bound import E_OUT, LIMIT_OUT
 from .pack import new_pack
-from .soft_driver import (D_CADOPT, D_GMAG, D_GROWTH, D_JADOPT, S_BROKEN, S_CPAR, S_EPAR, S_KBAD, S_LIMIT, S_N, S_NA,
-                          S_NAWAKE, S_NB, S_NC, S_NEED, S_NF, S_NJ, S_NPAIRS, S_NS, S_NT, S_NTOUCH, S_SLEEP, S_STEP,
-                          soft_world_step)
+from .soft_driver import (
+    D_CADOPT,
+    D_GMAG,
+    D_GROWTH,
+    D_JADOPT,
+    S_BROKEN,
+    S_CPAR,
+    S_EPAR,
+    S_KBAD,
+    S_LIMIT,
+    S_N,
+    S_NA,
+    S_NAWAKE,
+    S_NB,
+    S_NC,
+    S_NEED,
+    S_NF,
+    S_NJ,
+    S_NPAIRS,
+    S_NS,
+    S_NT,
+    S_NTOUCH,
+    S_SLEEP,
+    S_STEP,
+    soft_world_step,
+)
 
 _ROWS = LAYOUTS.index("rows")
 _NO_LINKS = np.zeros((0, 3), np.int64)
@@ -112,9 +136,9 @@ class OneCall:
         self._call = direct(soft_world_step, P)
 
     def _v0(self, rows: int) -> np.ndarray:
-        """soft_step's start-velocity scratch, ``rows`` long."""
+        """soft_step's start-velocity and pivot scratch, ``rows`` long."""
         if self._V0 is None or len(self._V0) < rows:
-            self._V0 = np.empty((rows, 3))
+            self._V0 = np.empty((rows, PIVOT_COLUMNS))
         return self._V0
 
     # -- the step ------------------------------------------------------------

@@ -18,10 +18,10 @@ from .jit import row_kernel
 
 
 @row_kernel
-def save_pivots(c, B, J, JW):
-    """PV[i]: the anchor body i is capped about (rank 2: a joint to the world or a static body,
-    1: to a moving body, 0: none)."""
-    PV = JW.PV
+def save_pivots(c, B, J, JW, PV):
+    """PV[i, PX:RANK + 1]: the anchor body i is capped about (rank 2: a joint to the world or a
+    static body, 1: to a moving body, 0: none).  ``PV``: per-body scratch, rotation_cap's columns
+    (kept out of the joint scratch, which every per-joint call passes)."""
     ja, jb, la, lb, on, kind = J.a, J.b, J.la, J.lb, JW.on, B.kind  # each column's view built once
     for i in range(c.n):
         PV[i, RANK] = 0.0

@@ -3,9 +3,8 @@
 ``JointScratch`` holds per joint the body rows it joins (``ab``: the world is row
 n), the prepared constants ``F`` and row geometry ``G`` (layout.py), whether it is
 on this step, its row mask and whether its equality rows stay sequential
-(``seq``); per body the step-start positions ``X0``/``Q0``, the body rows
-``SB`` of modes that have none of their own and the anchor the rotation cap
-keeps (``PV``, pivot.py).  ``JointWork.update`` grows the
+(``seq``); per body the step-start positions ``X0``/``Q0`` and the body rows
+``SB`` of modes that have none of their own.  ``JointWork.update`` grows the
 arrays and rebuilds the global system (system/topology.py) and the list of
 body pairs that must not collide only when the joint table's version or the
 kinds of the joined bodies changed.
@@ -25,8 +24,7 @@ from .system.topology import build, empty_system
 #: per joint (the table's rows), then per body (arrays of their own: one row per body)
 PER_JOINT = {"ab": ((2,), np.int64), "F": ((NF,), np.float64), "G": ((ROWS, NG), np.float64),
              "on": ((), np.int64), "mask": ((), np.int64), "seq": ((), np.int64)}
-PER_BODY = {"X0": ((2,), np.float64), "Q0": ((), np.float64), "SB": ((NB,), np.float64),
-            "PV": ((3,), np.float64)}
+PER_BODY = {"X0": ((2,), np.float64), "Q0": ((), np.float64), "SB": ((NB,), np.float64)}
 JointScratch = view_class("JointScratch", {**PER_JOINT, **{k: (*e, "own") for k, e in PER_BODY.items()}},
                           "joint_scratch")
 

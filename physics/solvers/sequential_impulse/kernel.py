@@ -68,7 +68,7 @@ def si_step(ctx, par, B, C, S, W, M, J, JW, JS):
     eq_global = p.joint_solver == GLOBAL
     if J is not None:
         begin_table_joints(c, B, J, JW, dt, p.warm_starting)
-        save_pivots(c, B, J, JW)
+        save_pivots(c, B, J, JW, M.PV)
     contact_bias(C, nc, W, inv_dt, p.baumgarte, p.linear_slop, MAX_PUSH, p.position_correction == BAUMGARTE)
     warm_start_points(B, C, nc, W)
     for _ in range(p.velocity_iterations):
@@ -76,10 +76,7 @@ def si_step(ctx, par, B, C, S, W, M, J, JW, JS):
         if J is not None:
             table_joint_pass(c, B, J, JW, JS, inv_dt, eq_global)
     reset_displacements(n, M.DP, M.DQ, M.DC, M.DS)
-    if JW is None:  # no joints, no pivots (numba prunes the other branch for a None type)
-        integrate_positions(B, n, dt, M.DP, M.DQ, M.DC, M.DS, M.DP, np.int64(0))
-    else:
-        integrate_positions(B, n, dt, M.DP, M.DQ, M.DC, M.DS, JW.PV, np.int64(n if J is not None else 0))
+    integrate_positions(B, n, dt, M.DP, M.DQ, M.DC, M.DS, M.PV, np.int64(n if J is not None else 0))
     # after the move, so a speculative hit bounces at the wall rather than a gap away from it
     restitution_points(B, C, nc, W, p.restitution_threshold)
     if p.position_correction == SPLIT and p.position_iterations > 0:

@@ -7,9 +7,11 @@ import numpy as np
 
 from ...constraints.joints.work import after_step, joint_args
 from ...constraints.point import point_rows, point_type
+from ...constraints.rotation_cap import PIVOT_COLUMNS
 from ...settings import Setting, declare
 from ..base import SolverMode
-from ..joint_settings import GLOBAL as _GLOBAL, joint_position_setting, joint_solver_setting
+from ..joint_settings import GLOBAL as _GLOBAL
+from ..joint_settings import joint_position_setting, joint_solver_setting
 from .kernel import BAUMGARTE, GLOBAL, MAX_PUSH, SPLIT, si_step_flat
 
 assert GLOBAL == _GLOBAL
@@ -18,8 +20,8 @@ CORRECTIONS = ("baumgarte", "split_impulse")
 assert CORRECTIONS.index("baumgarte") == BAUMGARTE and CORRECTIONS.index("split_impulse") == SPLIT
 
 # displacements since the step began (DP, DQ and its cos/sin DC, DS) and the pseudo-velocities
-# of the split impulses (VP, WP)
-Motion = namedtuple("Motion", "DP DQ DC DS VP WP")
+# of the split impulses (VP, WP), the rotation cap's pivots (PV: constraints/rotation_cap.py)
+Motion = namedtuple("Motion", "DP DQ DC DS VP WP PV")
 # per point: the velocity bias and the split impulses' accumulated pseudo impulse
 SIPoints = point_type("SIPoints", __name__, extra=(("bias", np.float64), ("jp", np.float64)))
 
@@ -52,7 +54,7 @@ class SequentialImpulse(SolverMode):
 
     def _alloc_bodies(self, cap):
         self.M = Motion(np.zeros((cap, 2)), np.zeros(cap), np.ones(cap), np.zeros(cap),
-                        np.zeros((cap, 2)), np.zeros(cap))
+                        np.zeros((cap, 2)), np.zeros(cap), np.zeros((cap, PIVOT_COLUMNS)))
 
     def _alloc_rows(self, cap):
         self.W = point_rows(SIPoints, cap)

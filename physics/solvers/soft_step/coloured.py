@@ -22,6 +22,7 @@ from ...constraints.contact_wide import pack, repack_normal, unpack
 from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
 from ...constraints.joints.pivot import save_pivots
+from ...constraints.rotation_cap import PIVOT_COLUMNS
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
@@ -57,7 +58,6 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             zero_joint_impulses(J, c.nj)
         prepare_joints(c, B, J, JW, h, p.soft_joint[0], p.soft_joint[1], p.soft_joint[2])
         save_start(B, n, JW.X0, JW.Q0)
-        save_pivots(c, B, J, JW)
     eq_global = p.joint_solver == GLOBAL
     project = J is not None and eq_global and p.joint_projection and JS.dims[0] > 0
     bouncy = False
@@ -65,7 +65,9 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
         if C.e[k] != 0.0:
             bouncy = True
             break
-    V0 = np.empty((n if bouncy else 0, 3))
+    V0 = np.empty((n if bouncy or J is not None else 0, PIVOT_COLUMNS))
+    if J is not None:
+        save_pivots(c, B, J, JW, V0)
     # the pass kinds as plain integers: numba compiles a kernel once per literal argument
     warm, solve, relax = np.int64(WARM), np.int64(SOLVE), np.int64(RELAX)
     for _ in range(p.substeps):
@@ -83,10 +85,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
-        if JW is None:  # no joints, no pivots (numba prunes the other branch for a None type)
-            integrate_row_positions(B, n, SB, h, SB, np.int64(0))
-        else:
-            integrate_row_positions(B, n, SB, h, JW.PV, np.int64(n if J is not None else 0))
+        integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0))
         if project:
             refresh_rows(c, B, J, JW)
             correct_system(B, JW, JS, 1.0)

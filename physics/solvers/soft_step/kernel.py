@@ -43,6 +43,7 @@ from ...constraints.contact_soft import prepare_contacts, solve_contacts, store_
 from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
 from ...constraints.joints.pivot import save_pivots
+from ...constraints.rotation_cap import PIVOT_COLUMNS
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
@@ -58,8 +59,8 @@ GLOBAL = 0  # index of "global" in the joint_solver setting's choices
 def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
     # (JW.SB is SB: the joints work on the same body rows as the contacts)
     """One step of ``ctx[0].dt`` in ``par[0].substeps`` sub-steps (see the module doc); returns the
-    number of joints that broke.  ``V0``: scratch of at least n rows of 3 (the sub-step's start
-    velocities, which cap the bounces)."""
+    number of joints that broke.  ``V0``: scratch of at least n rows of PIVOT_COLUMNS (the sub-step's
+    start velocities, which cap the bounces, and the pivots: rotation_cap.py)."""
     c = ctx[0]
     p = par[0]
     n = c.n
@@ -77,7 +78,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             zero_joint_impulses(J, c.nj)
         prepare_joints(c, B, J, JW, h, p.soft_joint[0], p.soft_joint[1], p.soft_joint[2])
         save_start(B, n, JW.X0, JW.Q0)
-        save_pivots(c, B, J, JW)
+        save_pivots(c, B, J, JW, V0)
     eq_global = p.joint_solver == GLOBAL
     project = J is not None and eq_global and p.joint_projection and JS.dims[0] > 0
     iterations = p.iterations
@@ -101,10 +102,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
-        if JW is None:  # no joints, no pivots (numba prunes the other branch for a None type)
-            integrate_row_positions(B, n, SB, h, SB, np.int64(0))
-        else:
-            integrate_row_positions(B, n, SB, h, JW.PV, np.int64(n if J is not None else 0))
+        integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0))
         if project:
             refresh_rows(c, B, J, JW)
             correct_system(B, JW, JS, 1.0)
@@ -129,4 +127,4 @@ def soft_step_flat(ctx, par, BF, BI, CF, CI, Cpt, SF, SI, R, SB, JF, JI, JW, JS)
     compiled)."""
     B, C = bodies_view(BF, BI), contacts_view(CF, CI, Cpt)
     return soft_step(ctx, par, B, C, optional_springs(SF, SI), R, SB, optional_joints(JF, JI), JW, JS,
-                     np.empty((ctx[0].n, 3)))
+                     np.empty((ctx[0].n, PIVOT_COLUMNS)))
