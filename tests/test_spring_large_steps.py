@@ -10,7 +10,7 @@ energy of a fall through the spring's own length (a body released at rest has S0
 
 Two solver gains broke it:
 
-- the rotation cap (constraints/body_rows.py MAX_ROTATION, pi/4 per sub-step) was applied when
+- the rotation cap (constraints/rotation_cap.py MAX_ROTATION, pi/4 per sub-step) was applied when
   positions were integrated, after the springs were solved: the implicit spring set the angular
   velocity that removes its stretch through the anchor's arm, the cap then clamped it, and the
   linear half of the spring's impulse moved the anchor alone.  A 15 g capsule on a 1.2e5 N/m

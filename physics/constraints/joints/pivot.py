@@ -1,6 +1,6 @@
 """Which anchor the rotation cap turns each jointed body about (constraints/rotation_cap.py).
 
-The move caps each body's rotation per sub-step (body_rows.MAX_ROTATION, as Box2D v3's
+The move caps each body's rotation per sub-step (rotation_cap.MAX_ROTATION, as Box2D v3's
 b2IntegratePositionsTask), keeping the velocity of the centre of mass.  For a body held by a joint
 away from its centre (a bob on a rod spun faster than the cap) that breaks the rigid motion the
 joint solve produced: the body translates at the uncapped speed while it turns at the capped one,

@@ -36,7 +36,7 @@ import math
 import numpy as np
 
 from ..._jit import kernel
-from ..body_rows import MAX_ROTATION
+from ..rotation_cap import MAX_ROTATION
 from . import geometric as geo
 from .geometry import IMPLICIT, ends, spring_rows
 from .implicit import DIAG, JAW, JAX, JAY, JBW, JBX, JBY, RHS, ROW_FIELDS, apply_system, row_speed, solve_system

@@ -3,7 +3,7 @@
 Velocities first (gravity and user forces on awake dynamic bodies), then
 positions with the new velocities: the semi-implicit order that keeps
 orbits and oscillators from gaining energy.  Rotation per sub-step is
-capped (constraints/body_rows.py MAX_ROTATION) so a spinning sliver cannot
+capped (constraints/rotation_cap.py MAX_ROTATION) so a spinning sliver cannot
 tunnel through its own contacts.
 """
 from __future__ import annotations
