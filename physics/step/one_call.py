@@ -72,6 +72,8 @@ class OneCall:
         self._version = None
         self._h = 0.0  # the sub-step the impulses are carried at
         self._call = None  # the driver compiled for the pack's type (_jit.direct)
+        self._step = -1  # the step count and adopt factors the pack's slots hold
+        self._cadopt = self._jadopt = -1.0
 
     # -- whether and what --------------------------------------------------
     @staticmethod
@@ -143,7 +145,11 @@ class OneCall:
 
     # -- the step ------------------------------------------------------------
     def step(self, world, pl, dt: float) -> bool:
-        """One step through the driver; False (nothing done) when it does not cover the world."""
+        """One step through the driver; False (nothing done) when it does not cover the world.
+
+        This runs once per step of every small world, so it reads attributes directly and
+        writes a slot of the pack only when its value changed (a numpy item write costs about
+        as much as the rest of a one-body step's Python)."""
         if not self.enabled:
             return False
         par = pl.params(world)
@@ -159,10 +165,14 @@ class OneCall:
             self._settings(world, pl, par, dt)
         s = world._store
         steps = world.steps
-        S, D = self.S, self.D
-        S[S_STEP] = steps
-        D[D_CADOPT] = s.contacts.adopt_factor(self._h, steps)
-        D[D_JADOPT] = s.joints.adopt_factor(self._h, steps) if s.joints.n else 1.0
+        if steps != self._step:  # the driver counts accepted steps itself
+            self.S[S_STEP] = self._step = steps
+        r = s.contacts.adopt_factor(self._h, steps)
+        if r != self._cadopt:
+            self.D[D_CADOPT] = self._cadopt = r
+        r = s.joints.adopt_factor(self._h, steps) if s.joints.n else 1.0
+        if r != self._jadopt:
+            self.D[D_JADOPT] = self._jadopt = r
         t0 = time.perf_counter()
         code = self._call(self.P)
         while drv.OK < code < drv.NONFINITE:
@@ -170,7 +180,8 @@ class OneCall:
             code = self._call(self.P)
         elapsed = time.perf_counter() - t0
         if code != drv.OK:
-            self._refused(world, pl, code)
+            self._refused(world, pl, code)  # raises
+        self._step = steps + 1
         self._accepted(world, pl, dt, elapsed)
         return True
 
@@ -207,7 +218,8 @@ class OneCall:
 
     @staticmethod
     def _mirror(world, nc: int) -> None:
-        """The contact tables swapped inside the driver: so do the Python handles (``nc`` rows)."""
+        """The contact tables swapped inside the driver: so do the Python handles (``nc`` rows;
+        ``_accepted`` does the same inline)."""
         c = world._store.contacts
         c.swap()
         c.n = nc
@@ -221,17 +233,20 @@ class OneCall:
 
     def _accepted(self, world, pl, dt: float, elapsed: float) -> None:
         S = self.S.tolist()  # the slots read once
-        self._mirror(world, S[S_NC])
-        if world._store.joints.n:
-            after_step(world._store, S[S_BROKEN])
+        store = world._store
+        c = store.contacts
+        c.swap()  # the driver swapped the contact tables: so do the Python handles
+        c.n = S[S_NC]
+        if store.joints.n:
+            after_step(store, S[S_BROKEN])
         pl.n_awake = S[S_NAWAKE] if world._sleeping else -1
         pl.npairs = S[S_NPAIRS]
-        pl.profile.defer(self.T, elapsed)
+        prof = pl.profile
+        prof._stamps, prof._wall = self.T, elapsed  # StepProfile.defer
         world._time += dt
         world.steps += 1
         world.fault = None
         ev = pl.events
-        ev._sensed = False
-        ev.commit(world, S[S_NT], S[S_NB], S[S_NA])
+        ev.commit_unsensed(world, S[S_NT], S[S_NB], S[S_NA])
         if ev.contacts.keys is not self._keys[S[S_EPAR]]:  # the merge kept sleeping ends: new arrays
             self.key = None

@@ -128,11 +128,13 @@ def soft_world_step(P):
             S[S_NTOUCH] > (P.EA1 if S[S_EPAR] == 0 else P.EA0).shape[0]:
         return GROW_ROWS
     T[2] = cycles()
-    sort_pairs(F.id, P.pairs, npairs, P.pkeys, P.porder)
-    nc = collide_with(P.ctx, B, F, verts_view(P.VF, P.VI), P.pairs, npairs, C, Cp, S[S_NC], P.full, P.pkeys,
-                      P.porder, P.mscratch)
-    if nc < 0:
-        return NEED_FULL
+    nc = 0  # no pairs, no rows: a lone body or a scattered world skips the narrow phase's call
+    if npairs:
+        sort_pairs(F.id, P.pairs, npairs, P.pkeys, P.porder)
+        nc = collide_with(P.ctx, B, F, verts_view(P.VF, P.VI), P.pairs, npairs, C, Cp, S[S_NC], P.full,
+                          P.pkeys, P.porder, P.mscratch)
+        if nc < 0:
+            return NEED_FULL
     # the rows are final: the tables' roles swap (Python mirrors it: ContactBuffer.swap)
     S[S_CPAR] = 1 - S[S_CPAR]
     S[S_NC] = nc
@@ -173,6 +175,7 @@ def _finish(P, B, Sp, C, nc):
     S[S_NA] = na
     S[S_NTOUCH] = nt
     S[S_EPAR] = 1 - S[S_EPAR]
+    S[S_STEP] += 1  # the accepted step's number: the next step's, unless Python writes another
     T[6] = cycles()
     return OK
 
