@@ -82,6 +82,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
     eq_global = p.joint_solver == GLOBAL
     project = J is not None and eq_global and p.joint_projection and JS.dims[0] > 0
     iterations = p.iterations
+    touching = c.nc > 0  # a lone or scattered body: no contact verb is called
     bouncy = False  # any restitution: the sub-step's start velocities cap the bounces
     for k in range(c.nc):
         if C.e[k] != 0.0:
@@ -91,11 +92,13 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
         integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
         if bouncy:
             save_velocities(SB, n, V0)
-        warm_start_contacts(c, SB, C, R)
+        if touching:
+            warm_start_contacts(c, SB, C, R)
         if J is not None:
             warm_start_joints(c, B, J, JW)
         for it in range(iterations):
-            solve_contacts(c, p, SB, C, R, yes, yes)
+            if touching:
+                solve_contacts(c, p, SB, C, R, yes, yes)
             if J is not None:
                 solve_joints(c, B, J, JW, JS, yes, p.inv_h, eq_global)
         if S is not None and c.ns > 0:  # last before the move (module doc); on the body table
@@ -107,7 +110,8 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             refresh_rows(c, B, J, JW)
             correct_system(B, JW, JS, 1.0)
         if p.relax:
-            solve_contacts(c, p, SB, C, R, no, yes)
+            if touching:
+                solve_contacts(c, p, SB, C, R, no, yes)
             if J is not None:
                 refresh_rows(c, B, J, JW)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, no, p.inv_h, eq_global)
