@@ -31,6 +31,7 @@ def test_laser_readout_and_moving_the_emitter(launch, tmp_path):
     app.click(*centre(st["ui_rects"]["tool:laser"]))
     st = app.wait(lambda s: s["tool"] == "laser", 10, "the laser tool")
     app.drag(to_screen(st, (-7.0, 3.0)), to_screen(st, (-6.0, 2.0)))     # down-right at box a
+    app.settle()  # the last move handled before the release (a loaded machine merges them)
     app.xdo("mouseup", 1)
     st = app.wait(lambda s: len(s["lasers"]) == 1 and "inspector:laser" in s["ui_values"], 10, "the readout")
     st = app.settle()
@@ -48,6 +49,7 @@ def test_laser_readout_and_moving_the_emitter(launch, tmp_path):
     # Ctrl+drag the emitter up 2 m: it moves (fixed in the world still), pointing the same way
     app.xdo("keydown", "ctrl")
     app.drag(to_screen(st, (-7.0, 3.0)), to_screen(st, (-7.0, 5.0)))
+    app.settle()  # the last move handled before the release (a loaded machine merges them)
     app.xdo("mouseup", 1)
     app.xdo("keyup", "ctrl")
     st = app.wait(lambda s: s["lasers"][0]["local"][1] > 4.5, 10, "the emitter moved")
@@ -63,6 +65,7 @@ def test_laser_readout_and_moving_the_emitter(launch, tmp_path):
     # dropped on box c it rides with c
     app.xdo("keydown", "ctrl")
     app.drag(to_screen(st, (-7.0, 5.0)), to_screen(st, (0.2, 3.1)))
+    app.settle()  # the last move handled before the release (a loaded machine merges them)
     app.xdo("mouseup", 1)
     app.xdo("keyup", "ctrl")
     st = app.wait(lambda s: s["lasers"][0]["body"] == body(s, "c")["id"], 10, "the emitter on c")
