@@ -38,8 +38,13 @@ def main(argv=None) -> int:
     args = parse_args(argv)
     import pyglet
     pyglet.options["debug_gl"] = False
+    from physics.step.one_call import compile_on_demand
+
     from .loop import MainLoop
     from .window import Sandbox
+    # a world whose one-call step is not compiled yet plays through the pipeline's stages while
+    # the compile helper makes it (app/warmup.py); no step stops the window to compile it
+    compile_on_demand(False)
     size = tuple(int(v) for v in args.size.lower().split("x"))
     pos = tuple(int(v) for v in args.position.split(",")) if args.position else None
     world = None

@@ -19,6 +19,11 @@ Each unit that is in the cache leaves a marker file in numba's cache directory (
 on the physics sources, so an edit of ``physics/`` starts again): a launch whose units are all
 marked loads everything here, without starting the helper.
 
+soft_step's whole step as one compiled call (``physics.step.one_call``) is not in the gate: the
+scene plays through the pipeline's stages (the same kernels the gate compiled, the same bits)
+while the first helper compiles the driver (``final``), and steps through it from the step after
+it is loaded here.  A mode switched to waits for its solver and broad phase only, likewise.
+
 Progress is counted in kernels really compiled (every process), per unit, against what the last
 cold launch compiled for the units still to do (``app.compile_progress``).  The window throttles
 its frame rate while this process compiles or loads (see ``busy``).
@@ -75,7 +80,10 @@ class Warmup:
         self.first_launch = self.cache is None or not any(self.cache.glob("unit-*.ok"))
         mine, theirs = compile_units.gate_units(*self.key, self.narrow)
         self.gate = mine + theirs     # loaded here once the scene can run (the last step loads them)
-        self.final = "step:" + ":".join(self.key) + (":full" if self.narrow != "narrow" else "")
+        # the one-call step's driver for this world: after the gate (the module docstring; the
+        # sandbox's main turns physics' compile_on_demand off, so the scene plays meanwhile)
+        self.final = "step:" + ":".join(self.key) + (":full" if self.narrow != "narrow" else "") + \
+            (":joints" if world.joints else "")
         # the mode's joint stage is the largest unit (182 CPU s cold, measured alone: it compiles
         # the step again with the joint table).  A scene with joints waits for it; any other scene
         # plays without it, while the helper compiles it first of the background units (the first
@@ -86,11 +94,13 @@ class Warmup:
                       if not self.cached(u)]
         if os.environ.get("STELKROPP_BACKGROUND_COMPILE", "1") == "0":
             background = []     # other modes only when switched to (e.g. a CI box with one core)
+        if not self.cached(self.final):
+            background.insert(0, self.final)    # the scene plays without it meanwhile
         if not world.joints and not self.cached(joints):
             background.insert(0, joints)    # the open mode's own: the drag needs it in any case
         self.joints = joints
         self.background = background
-        self.warm = all(self.cached(u) for u in mine + theirs + [self.final] + self.after_final)
+        self.warm = all(self.cached(u) for u in mine + theirs + self.after_final)
         if self.warm:
             mine, theirs = [], []      # all on disk: one probe step here loads it all, at once
         self.mine, self.theirs = mine, theirs
@@ -100,7 +110,7 @@ class Warmup:
         # when the helper is done with its share first, it takes the other half's last units
         # (the other process then finds them in the cache: compile_units.unit_lock)
         self._initial_queue = theirs + mine[:0:-1] + background
-        self.todo = [u for u in mine + theirs + [self.final] + self.after_final if not self.cached(u)]
+        self.todo = [u for u in mine + theirs + self.after_final if not self.cached(u)]
         self.counts = compile_progress.KernelCounts(self._counts_path())
         self.here: dict[str, int] = {}          # kernels compiled in this process, per unit
         self._n0 = self.counter.n               # the counter when the unit running here began
@@ -200,9 +210,10 @@ class Warmup:
             self._compile_apart()
         else:
             self._compile_here()
-        self._unit(self.final)
         for u in self.after_final:
             self._unit(u)
+        if self.cached(self.final):
+            self._unit(self.final)     # on disk: loaded now (else the helper's first background unit)
         self.counts.save({u: self._compiled(u) for u in self.todo})
         self.warmed.add(self.key)
         self.loaded.update(self.gate)
@@ -220,7 +231,7 @@ class Warmup:
         self.stage = "waiting for the compiler processes"
         self._wait_helper(self.mine, helper=self.second)
         self._wait_helper(self.theirs)
-        self._wait_helper([self.final] + self.after_final, helper=self.second)
+        self._wait_helper(self.after_final, helper=self.second)
         self.second.close()        # the first helper goes on with the background units
 
     def _compile_here(self):
@@ -241,7 +252,7 @@ class Warmup:
         stages (``want_unit``), and the open mode's joint stage and the quadtree overlay's kernels
         once the helper has them (the joint stage is the mouse drag's: a scene without joints
         plays before the helper has it, and the first drag should not wait for it then)."""
-        later = [u for u in (self.joints, "extras")
+        later = [u for u in (self.joints, self.final, "extras")
                  if self.helper is not None and u in self._initial_queue and u not in self.loaded]
 
         def settled():
@@ -267,8 +278,15 @@ class Warmup:
             solver, integrator, bp = key
             self.label = f"{solver} ({integrator})"
             self._wait_helper([f"solve:{solver}:{integrator}", f"broad:{bp}"], locked=False)
-            self._unit("step:" + ":".join(key), locked=False)
-            self.warmed.add(key)
+            self.warmed.add(key)     # the pipeline's stages step it; the driver follows
+            step = "step:" + ":".join(key)
+            h = self.helper
+            if h is not None and h.alive and not self.cached(step):
+                if step not in later and step not in self.loaded:
+                    h.push(step, first=True)       # compiled there, loaded here once settled
+                    later.append(step)
+            else:
+                self._unit(step, locked=False)     # on disk (a load), or no helper process
             # what this mode compiled: the next switch to it on a cold cache counts against it
             self.counts.save({u: self._compiled(u) for u in self.mode_units(*key)})
 
@@ -309,11 +327,12 @@ class Warmup:
 
     def mode_units(self, solver: str, integrator: str, broadphase: str | None = None,
                    joints: bool = False) -> list[str]:
-        """The units a switch to this mode loads (``_serve``): its solver, the broad phase, its
-        whole step and, for a world with joints, its joint stage."""
+        """The units a switch to this mode loads (``_serve``) before it steps: its solver, the broad
+        phase and, for a world with joints, its joint stage (its one-call step, where it has one,
+        follows while it plays)."""
         key = self._mode_key(solver, integrator, broadphase)
         solver, integrator, bp = key
-        units = [f"solve:{solver}:{integrator}", f"broad:{bp}", "step:" + ":".join(key)]
+        units = [f"solve:{solver}:{integrator}", f"broad:{bp}"]
         return units + ([compile_units.joints_unit(solver, integrator)] if joints else [])
 
     def mode_progress(self, units: list[str]):

@@ -7,6 +7,7 @@ find short (pairs, contact rows, the touching sets), switch to the narrow phase'
 rebuild the joint system when a joined body changes kind, and sleep.
 """
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -14,6 +15,9 @@ import pytest
 import physics
 from physics.scene import scene_from_dict
 from bench.small_descs import small
+from physics.step.soft_driver import S_SWEEP
+
+ROOT = Path(__file__).resolve().parent.parent
 
 
 def _pile(n=40):
@@ -36,6 +40,14 @@ def _rounded():
     return w
 
 
+def _swept_pile():
+    """The pile with the sweep broad phase chosen: it grows the pairs (and the sweep's own pair
+    scratch with them) as the brute force pile does."""
+    w = _pile()
+    w.broadphase = "sweep"
+    return w
+
+
 SCENES = {
     "box": lambda: scene_from_dict(small("box")),
     "stack5": lambda: scene_from_dict(small("stack5")),
@@ -44,6 +56,9 @@ SCENES = {
     "cradle5": lambda: scene_from_dict(small("cradle5")),
     "pile40": _pile,
     "rounded": _rounded,
+    "pile40_sweep": _swept_pile,
+    # 132 fixtures: the automatic broad phase is the sweep; joints, springs, circles and polygons
+    "default": lambda: physics.load_scene(ROOT / "scenes" / "default.json"),
 }
 
 
@@ -84,6 +99,18 @@ def test_driver_steps_bit_for_bit_as_the_pipeline(scene):
     b = _run(SCENES[scene], False, 120)
     assert b._pipeline.one_call.P is None
     _same(a, b)
+
+
+def test_the_driver_runs_the_sweep_with_its_own_scratch():
+    w = _run(SCENES["default"], True, 3)
+    assert physics.collision.broadphase.resolve(w.broadphase, w._store.fixtures.n) == "sweep"
+    oc = w._pipeline.one_call
+    assert oc.P is not None and oc.S[S_SWEEP] == 1
+    assert oc.sweep[0][0] == w._store.fixtures.n  # the kept order's [n, axis]: the driver swept
+    brute = _run(_pile, True, 1)._pipeline.one_call
+    swept = _run(_swept_pile, True, 1)._pipeline.one_call
+    assert brute.S[S_SWEEP] == 0 and len(brute.sweep[1]) == 0 and swept.S[S_SWEEP] == 1
+    assert brute._call is swept._call  # one compiled driver for both broad phases
 
 
 def test_driver_grows_what_it_found_short():
@@ -143,3 +170,31 @@ def test_worlds_the_driver_leaves_to_the_pipeline():
     w.bodies[0].fixtures[0].sensor = True  # a sensor (the static ground): the pipeline's events stage
     w.step()
     assert w._pipeline.one_call.P is None
+
+
+def test_a_world_waits_for_its_driver_without_compile_on_demand(monkeypatch):
+    """With ``compile_on_demand`` off (the sandbox) a world whose driver is not compiled steps
+    through the pipeline's stages, and through the driver from the step after it is compiled:
+    the same bits as a world stepped through the pipeline all along."""
+    from physics.step import one_call
+    _run(SCENES["chain10"], True, 1)  # the driver for this pack type, compiled in this process
+
+    class NotCompiled:
+        overloads = {}
+    compiled = one_call.soft_world_step
+    was = one_call.compile_on_demand(False)
+    try:
+        monkeypatch.setattr(one_call, "soft_world_step", NotCompiled)
+
+        def edit(w, k):
+            if k == 40:  # compiled (by the sandbox's compile unit) while the world steps
+                monkeypatch.setattr(one_call, "soft_world_step", compiled)
+            oc = w._pipeline.one_call  # (the state the step before this one left)
+            if k >= 1:
+                assert (oc.P is not None) == (k > 40), k
+                assert (oc._waiting is not None) == (k <= 40), k
+        a = _run(SCENES["chain10"], True, 120, edit)
+    finally:
+        one_call.compile_on_demand(was)
+    b = _run(SCENES["chain10"], False, 120)
+    _same(a, b)

@@ -4,7 +4,7 @@
 driver once per step and does in Python only what compiled code cannot: grow an array and call
 again, raise a refused step, run the user's callbacks.  The Python work per step does not grow
 with the scene.  A world the driver does not cover (another mode, the coloured layout, sensors,
-a user pair filter, a broad phase other than brute force) steps through the pipeline's stages.
+a user pair filter, the quadtree broad phase) steps through the pipeline's stages.
 """
 from __future__ import annotations
 
@@ -24,7 +24,7 @@ from ..solvers.soft_step.layout import LAYOUTS
 from ..store.table import GENERATION
 from . import soft_driver as drv
 from .energy_bound import E_OUT, LIMIT_OUT
-from .pack import new_pack
+from .pack import new_pack, pack_signature
 from .soft_driver import (
     D_CADOPT,
     D_GMAG,
@@ -49,11 +49,27 @@ from .soft_driver import (
     S_NTOUCH,
     S_SLEEP,
     S_STEP,
+    S_SWEEP,
     soft_world_step,
 )
 
 _ROWS = LAYOUTS.index("rows")
+_BROAD = ("brute", "sweep")  # the broad phases the driver runs (the quadtree steps through the pipeline)
 _NO_LINKS = np.zeros((0, 3), np.int64)
+
+#: Whether a world whose driver is not compiled in this process compiles it at its next step
+#: (True), or steps through the pipeline's stages until something else has compiled or loaded it
+#: (False: the sandbox, whose compile units bring the driver in while the scene already plays;
+#: both paths give the same bits).  ``compile_on_demand`` sets it.
+_ON_DEMAND = [True]
+
+
+def compile_on_demand(on: bool) -> bool:
+    """Set whether a world compiles its step driver when it first needs it (the default) or steps
+    without it until it is compiled; returns the previous setting."""
+    was = _ON_DEMAND[0]
+    _ON_DEMAND[0] = bool(on)
+    return was
 
 
 class OneCall:
@@ -68,10 +84,12 @@ class OneCall:
         self._sort = (np.zeros(0, np.int64), np.zeros(0, np.int64))  # the pairs' keys and order
         self._scratch = None  # the narrow phase's manifold scratch
         self._V0 = None  # soft_step's start-velocity scratch
+        self.sweep = None  # the sweep broad phase's scratch in the pack (empty: brute force)
         self._dt = None  # the step length and the mode's settings version the slots were set for
         self._version = None
         self._h = 0.0  # the sub-step the impulses are carried at
         self._call = None  # the driver compiled for the pack's type (_jit.direct)
+        self._waiting = None  # (pack type, driver overloads) while its driver is not compiled
         self._step = -1  # the step count and adopt factors the pack's slots hold
         self._cadopt = self._jadopt = -1.0
 
@@ -81,7 +99,7 @@ class OneCall:
         """Whether the driver covers this world as it is now."""
         return (world._mode.name == "soft_step" and par.get("solver_layout") == _ROWS
                 and world._pair_filter is None and world._n_sensors == 0 and not pl.events.sensors.active
-                and broadphase.resolve(world.broadphase, world._store.fixtures.n) == "brute")
+                and broadphase.resolve(world.broadphase, world._store.fixtures.n) in _BROAD)
 
     @staticmethod
     def _key(world, pl, par) -> tuple:
@@ -92,8 +110,10 @@ class OneCall:
                 s.contacts.full, world._max_pairs, world._pair_filter is None, world._n_sensors,
                 pl.events.sensors.active, world._broadphase)
 
-    def build(self, world, pl) -> None:
-        """A pack of the world's arrays as they are, with room for the step's rows."""
+    def build(self, world, pl, now: bool = False) -> None:
+        """A pack of the world's arrays as they are, with room for the step's rows; with
+        ``compile_on_demand`` off and the driver for it not compiled, none (unless ``now``: a
+        step the driver began must end in it)."""
         s = world._store
         mode = world._mode
         n, nj = s.bodies.n, s.joints.n
@@ -126,16 +146,37 @@ class OneCall:
         S[S_CPAR] = S[S_EPAR] = 0  # the pack's first tables are the current ones
         self._dt = None  # the settings are written again before the next call
         self._keys = (tr.keys, tr._keys2)
-        self.P = P = new_pack(pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
-                          *s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.verts.arrays.flat,
-                          *s.springs.arrays.flat, *c.cur_cols.flat, *c.prev_cols.flat, pl._pairs, exclude,
-                          *self._sort, self._scratch,
-                          ck.X, ck.Q, ck.V, ck.W, ck.bad, ck.why, ck.cluster, guard.start, guard.end,
-                          tr.keys, tr._keys2, tr.begin, tr._begin2, tr._absent, tr._absent2,
-                          isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, self._v0(len(mode.SB)),
-                          JF, JI, JW, JS, kinds, s.springs.arrays.flat[0] if s.springs.n else None,
-                          1 if c.full else None)
+        swept = broadphase.resolve(world.broadphase, s.fixtures.n) == "sweep"
+        S[S_SWEEP] = swept
+        self.sweep = self._sweep(s.fixtures.n if swept else 0, len(pl._pairs) if swept else 0)
+        values = (pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
+            *s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.verts.arrays.flat,
+            *s.springs.arrays.flat, *c.cur_cols.flat, *c.prev_cols.flat, pl._pairs, exclude,
+            *self._sort, self._scratch,
+            ck.X, ck.Q, ck.V, ck.W, ck.bad, ck.why, ck.cluster, guard.start, guard.end,
+            tr.keys, tr._keys2, tr.begin, tr._begin2, tr._absent, tr._absent2,
+            isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, self._v0(len(mode.SB)),
+            JF, JI, JW, JS, kinds, s.springs.arrays.flat[0] if s.springs.n else None,
+            1 if c.full else None, self.sweep)
+        self._waiting = None
+        if not (_ON_DEMAND[0] or now):
+            sig = pack_signature(values)
+            compiled = soft_world_step.overloads
+            if sig not in compiled:  # the pipeline steps it until the driver is here
+                self.P, self._waiting = None, (sig, len(compiled))
+                return
+        self.P = P = new_pack(*values)
         self._call = direct(soft_world_step, P)
+
+    @staticmethod
+    def _sweep(nf: int, npairs: int) -> tuple:
+        """The sweep's scratch for ``nf`` fixtures and ``npairs`` pairs (sweep_pairs' sizes), its
+        kept order fresh.  Under brute force it is empty (0, 0), of the same types: the pack's
+        type, and so the compiled driver, is the same for both broad phases."""
+        i4 = np.int32
+        return (np.full(2, -1, np.int64), np.arange(nf, dtype=i4), np.empty(nf), np.empty(nf, i4),
+                np.empty(nf, i4), np.empty(nf + 2, i4), np.empty(3 * nf, i4), np.empty((npairs, 2), i4),
+                np.empty(nf + 1, i4))
 
     def _v0(self, rows: int) -> np.ndarray:
         """soft_step's start-velocity and pivot scratch, ``rows`` long."""
@@ -159,7 +200,7 @@ class OneCall:
             if self.usable(world, pl, par):
                 self.build(world, pl)
             self.key = key
-        if self.P is None:
+        if self.P is None and not self._arrived(world, pl):
             return False
         if pl.dirty or dt != self._dt or par.version != self._version:
             self._settings(world, pl, par, dt)
@@ -184,6 +225,22 @@ class OneCall:
         self._step = steps + 1
         self._accepted(world, pl, dt, elapsed)
         return True
+
+    def _arrived(self, world, pl) -> bool:
+        """While the world waits for its driver (``compile_on_demand`` off): has it been compiled
+        or loaded since?  Then the pack is built and the driver steps from now on.  The driver's
+        overloads are looked up only when their number changed."""
+        w = self._waiting
+        if w is None:
+            return False
+        compiled = soft_world_step.overloads
+        if len(compiled) == w[1]:
+            return False
+        if w[0] not in compiled:
+            self._waiting = (w[0], len(compiled))
+            return False
+        self.build(world, pl)
+        return self.P is not None
 
     def _settings(self, world, pl, par, dt: float) -> None:
         """The world's settings into the step context and the pack's slots: on a change of the step
@@ -213,7 +270,7 @@ class OneCall:
             s.contacts.full = True
         elif code == drv.JOINT_KINDS:
             joint_work(s)._key = None  # the system is rebuilt for the bodies' new kinds
-        self.build(world, pl)
+        self.build(world, pl, now=True)
         self.key = self._key(world, pl, pl.params(world))
 
     @staticmethod

@@ -44,6 +44,9 @@ FIELDS = (
     "SS",
     # the narrow phase's whole kernel (1) or only its lean one (None: collision/narrowphase/kernel.py)
     "full",
+    # the sweep broad phase's scratch (broadphase/sweep.py: sweep_pairs' arrays from ``state`` to
+    # ``head``, the world's own, so its kept order is this world's; empty under brute force)
+    "sweep",
 )
 
 
@@ -65,3 +68,10 @@ def new_pack(*values):
     """A pack of ``values`` (FIELDS order).  ``StepPack(...)`` would compile numba's own
     constructor for each new pack type in every process (it is not cached); this one is."""
     return StepPack(*values)
+
+
+def pack_signature(values) -> tuple:
+    """The driver's argument types for a pack of ``values`` (FIELDS order), without building it:
+    what ``soft_world_step.overloads`` is keyed by once the driver is compiled for such a pack."""
+    from numba import typeof
+    return (StepPackType([(name, typeof(v)) for name, v in zip(FIELDS, values)]),)

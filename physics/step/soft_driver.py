@@ -17,6 +17,7 @@ import numpy as np
 
 from .._jit import kernel
 from ..collision.broadphase.brute import brute_pairs
+from ..collision.broadphase.sweep import sweep_pairs
 from ..collision.broadphase.fixture_filter import filter_pairs
 from ..collision.narrowphase.kernel import collide_with, sort_pairs
 from ..constraints.joints.kinds import kinds_changed
@@ -34,8 +35,8 @@ from .islands import joint_links_flat, update_islands
 #: pairs and their limit, sleeping on, awake bodies, joints broken, the size a grow code asks
 #: for, the touching merge's counts, the non-finite count
 (S_N, S_NF, S_NS, S_NJ, S_STEP, S_NC, S_CPAR, S_EPAR, S_NTOUCH, S_NPAIRS, S_LIMIT, S_SLEEP, S_NAWAKE,
- S_BROKEN, S_NEED, S_NT, S_NB, S_NA, S_KBAD) = range(19)
-S_SLOTS = 19
+ S_BROKEN, S_NEED, S_NT, S_NB, S_NA, S_KBAD, S_SWEEP) = range(20)
+S_SLOTS = 20
 #: P.D slots: the guard's growth r, |g|, the contact and joint impulses' adopt factors
 D_GROWTH, D_GMAG, D_CADOPT, D_JADOPT = range(4)
 D_SLOTS = 4
@@ -51,6 +52,17 @@ def _motors(JF, JI, BF, BI, nj):
     if JF is None:
         return 0.0, np.bool_(False)  # a literal False would compile guard_begin twice
     return motor_power(JF, JI, BF, BI, nj)
+
+
+@kernel
+def _broad_phase(F, nf, pairs, swept, sweep):
+    """The fixtures' overlapping pairs: brute force, or (``swept``) the sweep with the world's
+    scratch, whose ``tmp`` is as long as ``pairs``, so a count that fits one fits both.  A runtime
+    choice, not an optional argument: both worlds then step with one compiled driver."""
+    if not swept:
+        return brute_pairs(F, nf, pairs)
+    state, order, key, b0, b1, bstart, ent, tmp, head = sweep
+    return sweep_pairs(F, nf, state, order, key, b0, b1, bstart, ent, tmp, head, pairs)
 
 
 @kernel
@@ -110,7 +122,7 @@ def soft_world_step(P):
     if not _joints_ready(P.JF, P.JI, P.BF, P.BI, S[S_NJ], P.kinds):
         return JOINT_KINDS
     T[1] = cycles()
-    npairs = brute_pairs(F, nf, P.pairs)
+    npairs = _broad_phase(F, nf, P.pairs, S[S_SWEEP] != 0, P.sweep)
     S[S_NEED] = npairs
     if npairs > S[S_LIMIT]:
         return TOO_MANY_PAIRS

@@ -97,7 +97,8 @@ def test_the_joint_stage_holds_up_only_scenes_with_joints(tmp_path, monkeypatch)
     assert w2.after_final == [w2.joints] and w2.joints not in w2.background
     # without background compiles the open mode's joint stage is still the helper's first
     monkeypatch.setenv("STELKROPP_BACKGROUND_COMPILE", "0")
-    assert Warmup(plain, threading.Lock(), helper=False).background == [w.joints]
+    # (and the open scene's one-call step, which it plays without meanwhile)
+    assert Warmup(plain, threading.Lock(), helper=False).background == [w.joints, w.final]
 
 
 class _FakeHelper:
@@ -166,8 +167,8 @@ def test_the_joint_stage_the_helper_finishes_after_the_gate_is_loaded(monkeypatc
     w = warmup.Warmup(physics.load_scene(ROOT / "scenes" / "default.json"), threading.Lock())
     w.frame_drawn()
     w.start()
-    # both halves in the helpers, then the whole step in the second (this process only loads)
-    for helper, units in ((w.second, w.mine), (w.helper, w.theirs), (w.second, [w.final])):
+    # both halves in the helpers (this process only loads); the one-call step is not the gate's
+    for helper, units in ((w.second, w.mine), (w.helper, w.theirs)):
         for u in units:
             assert _wait_for(lambda: u in helper.queue or w.ready), u
             helper.finish(u)
@@ -176,6 +177,10 @@ def test_the_joint_stage_the_helper_finishes_after_the_gate_is_loaded(monkeypatc
     w.helper.finish(w.joints)
     assert _wait_for(lambda: w.joints_ready(w.solver, w.integrator)), "the helper's joint stage was not loaded"
     assert w.joints in ran
+    # the one-call step: the helper's next background unit, loaded here once it has it
+    assert w.final in w.helper.queue and w.final not in ran
+    w.helper.finish(w.final)
+    assert _wait_for(lambda: w.final in ran), "the helper's one-call step was not loaded"
 
 
 def test_the_gate_takes_the_narrow_kernel_the_scene_needs(monkeypatch):
@@ -233,7 +238,7 @@ def test_a_rival_mode_loads_while_the_scene_steps(monkeypatch):
 
     def fake_run(unit):
         held[unit] = lock.locked()
-        if unit.startswith("step:impulse"):
+        if unit.startswith("solve:impulse"):
             release.wait(30)
     monkeypatch.setattr(compile_units, "run", fake_run)
     monkeypatch.setattr(compile_units, "cached", lambda unit: False)
@@ -246,13 +251,14 @@ def test_a_rival_mode_loads_while_the_scene_steps(monkeypatch):
         if w.ready:
             break
         threading.Event().wait(0.01)
-    assert w.ready and all(held[u] for u in [*w.mine, w.final]), held
+    assert w.ready and all(held[u] for u in w.mine), held
+    assert w.final not in held  # the one-call step is not the gate's: the scene plays without it
     w.prioritize("impulse", w.integrator)
     for _ in range(300):
-        if any(u.startswith("step:impulse") for u in held):
+        if any(u.startswith("solve:impulse") for u in held):
             break
         threading.Event().wait(0.01)
-    rival = next(u for u in held if u.startswith("step:impulse"))
+    rival = next(u for u in held if u.startswith("solve:impulse"))
     assert not held[rival] and lock.acquire(blocking=False), "the rival's load holds the physics lock"
     lock.release()
     assert not w.can_step("impulse", w.integrator)
