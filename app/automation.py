@@ -85,6 +85,8 @@ def status(app) -> dict:
         "selected_joints": [s.id for s in ed.selection if s.alive and isinstance(s, physics.Joint)],
         "camera": {"center": app.camera.center.tolist(), "scale": app.camera.scale},
         "time": w.time, "steps": w.steps, "window": [app.width, app.height],
+        "one_call": w._pipeline.one_call.P is not None,     # the world steps through the compiled driver
+        "units_loaded": sorted(app.warmup.loaded),
         "ui_rects": app.ui_rects, "show_ui": app.show_ui,
         "springs": [{"id": s.id, "a": s.body_a.id, "b": None if s.body_b is None else s.body_b.id}
                     for s in w.springs if s.id not in ed.tool_springs] if small else [],

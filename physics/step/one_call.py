@@ -196,7 +196,7 @@ class OneCall:
         par = pl.params(world)
         key = self._key(world, pl, par)
         if key != self.key:
-            self.P = None
+            self.P = self._waiting = None
             if self.usable(world, pl, par):
                 self.build(world, pl)
             self.key = key

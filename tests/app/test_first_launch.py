@@ -116,4 +116,16 @@ def test_the_panels_work_while_the_kernels_compile(launch, tmp_path):
     assert st["running"] and st["ui_values"]["play_state"] == "running" and not st["gl_errors"]
     assert "progress" not in st["ui_rects"]
     app.screenshot("stepping")
+    # it played through the pipeline's stages; the helper then compiles the one-call step, this
+    # process loads it, and the world takes it at its next step (physics.step.one_call.
+    # compile_on_demand).  The pyramid may be asleep by then (a sleeping world takes no step):
+    # R resets it, and it falls again, through the one-call step
+    assert not st["one_call"] or any(u.startswith("step:") for u in st["units_loaded"])
+    st = app.wait(lambda s: any(u.startswith("step:") for u in s["units_loaded"]), COMPILE_TIMEOUT,
+                  "the one-call step from the helper")
+    app.key("r")
+    st = app.wait(lambda s: s["one_call"] and s["time"] < 1.0, 30, "the reset world through its one-call step")
+    steps = st["steps"]
+    st = app.wait(lambda s: s["steps"] > steps + 10, 60, "the scene to step through it")
+    assert st["one_call"] and st["running"] and not st["warm_errors"] and not st["fault"]
     print(f"panels after {t_panels:.1f} s, ready after {st['t_gate']:.0f} s")
