@@ -104,7 +104,8 @@ class OneCall:
     @staticmethod
     def _key(world, pl, par) -> tuple:
         """What the pack and the choice of path depend on: every attribute read directly, since
-        this runs once per step (store/table.py: GENERATION counts replaced table arrays)."""
+        this runs once per step (store/table.py: GENERATION counts replaced table arrays).  The
+        second entry counts the pipeline's steps (a world waiting for its driver makes them)."""
         s = world._store
         return (pl.edits, pl.python_steps, par.version, id(world._mode), GENERATION[0], s.joints.version,
                 s.contacts.full, world._max_pairs, world._pair_filter is None, world._n_sensors,
@@ -196,9 +197,11 @@ class OneCall:
         par = pl.params(world)
         key = self._key(world, pl, par)
         if key != self.key:
-            self.P = self._waiting = None
-            if self.usable(world, pl, par):
-                self.build(world, pl)
+            if self._waiting is None or key[0] != self.key[0] or key[2:] != self.key[2:]:
+                self.P = self._waiting = None
+                if self.usable(world, pl, par):
+                    self.build(world, pl)
+            # else only the pipeline's own steps since (key[1]): the same pack type to wait for
             self.key = key
         if self.P is None and not self._arrived(world, pl):
             return False
