@@ -329,10 +329,9 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         Raises :class:`SimulationError` (and leaves the world as it was before the
         step) if the step would produce a non-finite value.
         """
-        if self._in_callback:
-            self._check_editable("step")
+        self._check_editable("step")
         h = self._dt if dt is None else finite_num(dt, "dt", lo=DT_MIN, hi=DT_MAX)
-        if self._time + h == math.inf:  # both are finite and h > 0: only overflow is left
+        if not math.isfinite(self._time + h):
             raise ValueError(f"dt: a step of {h!r} s would take world.time ({self._time!r} s) beyond the float range")
         self._pipeline.step(self, h)
 

@@ -57,7 +57,7 @@ SCENES = {
     "pile40": _pile,
     "rounded": _rounded,
     "pile40_sweep": _swept_pile,
-    # 132 fixtures: the automatic broad phase is the sweep; joints, springs, circles and polygons
+    # 132 fixtures: the automatic broad phase is the sweep; springs, circles and polygons
     "default": lambda: physics.load_scene(ROOT / "scenes" / "default.json"),
 }
 

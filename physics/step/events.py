@@ -61,14 +61,6 @@ class StepEvents:
         self.contacts.take(world, nt, nb, na)
         self._commit_sensors(world)
 
-    def commit_unsensed(self, world, nt: int, nb: int, na: int) -> None:
-        """``commit`` for a step that had no sensors to sense (the step driver's): no overlap set
-        to commit, so only the touching sets and the step's stamp."""
-        self._sensed = False
-        self.contacts.take(world, nt, nb, na)
-        self.sensors.begin = self.sensors.ends = _NONE
-        self._stamp(world)
-
     def idle(self, world) -> None:
         """A step of a world without bodies: whatever touched or overlapped has ended."""
         if self.contacts.n or self.sensors.active:
@@ -82,11 +74,6 @@ class StepEvents:
             self.sensors.commit(world)
         else:
             self.sensors.begin = self.sensors.ends = _NONE
-        self._stamp(world)
-
-    def _stamp(self, world) -> None:
-        """The committed step's number; the event cache emptied; removed fixtures forgotten once
-        no event of this step names them."""
         self.step = world.steps
         self.cache = {}
         if world._gone_fixtures:  # removed fixtures are named only by the ends of this step

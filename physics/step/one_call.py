@@ -278,8 +278,7 @@ class OneCall:
 
     @staticmethod
     def _mirror(world, nc: int) -> None:
-        """The contact tables swapped inside the driver: so do the Python handles (``nc`` rows;
-        ``_accepted`` does the same inline)."""
+        """The contact tables swapped inside the driver: so do the Python handles (``nc`` rows)."""
         c = world._store.contacts
         c.swap()
         c.n = nc
@@ -293,20 +292,17 @@ class OneCall:
 
     def _accepted(self, world, pl, dt: float, elapsed: float) -> None:
         S = self.S.tolist()  # the slots read once
-        store = world._store
-        c = store.contacts
-        c.swap()  # the driver swapped the contact tables: so do the Python handles
-        c.n = S[S_NC]
-        if store.joints.n:
-            after_step(store, S[S_BROKEN])
+        self._mirror(world, S[S_NC])
+        if world._store.joints.n:
+            after_step(world._store, S[S_BROKEN])
         pl.n_awake = S[S_NAWAKE] if world._sleeping else -1
         pl.npairs = S[S_NPAIRS]
-        prof = pl.profile
-        prof._stamps, prof._wall = self.T, elapsed  # StepProfile.defer
+        pl.profile.defer(self.T, elapsed)
         world._time += dt
         world.steps += 1
         world.fault = None
         ev = pl.events
-        ev.commit_unsensed(world, S[S_NT], S[S_NB], S[S_NA])
+        ev._sensed = False
+        ev.commit(world, S[S_NT], S[S_NB], S[S_NA])
         if ev.contacts.keys is not self._keys[S[S_EPAR]]:  # the merge kept sleeping ends: new arrays
             self.key = None
