@@ -35,14 +35,15 @@ from .._jit import kernel
 from .block import solve_block
 from .body_rows import II, IM, VX, VY, W
 from .contact_soft import BLOCK, BOUNCED, INV_DET, JN, K11, K12, K22, KE0, MASS_N, MAXJ, NX, NY, PT, RNA, RNB, VN0
+from .restitution_chain import chain_impacts
 from .restitution_cluster import cap_clusters, save_velocities
 
 
 @kernel(runtime=True)
-def restitution_contacts(c, p, SB, C, R, V0):
+def restitution_contacts(c, p, SB, C, R, V0, start, at):
     """Bounce the points that first pushed since the last call (see the module doc), then cap
     each cluster of bodies bouncing together at its energy at the sub-step start ``V0``
-    (restitution_cluster.py)."""
+    (restitution_cluster.py).  ``start, at``: the step's restitution_chain.row_scratch."""
     threshold = p.restitution_threshold
     nc = c.nc
     due = np.zeros(nc, dtype=np.bool_)
@@ -60,8 +61,11 @@ def restitution_contacts(c, p, SB, C, R, V0):
     for k in range(nc):
         J0[k, 0] = R[k, JN]
         J0[k, 1] = R[k, PT + JN]
-        if due[k]:
+    rows = chain_impacts(c, p, SB, C, R, due, start, at)  # rows of touching bodies struck (restitution_chain.py)
+    for k in range(nc):
+        if due[k] and not rows[k]:
             _restitution(SB, C, k, R, threshold, C.e[k])
+        due[k] = due[k] or rows[k]
     cap_clusters(SB, C, nc, n, R, due, V0, VR, J0)
 
 

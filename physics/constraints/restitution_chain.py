@@ -1,0 +1,186 @@
+"""Impacts that pass along a row of touching bodies (Newton's cradle): propagated pair by pair.
+
+The sub-step's solve treats every touching contact at once.  When a body strikes the first of
+a row of touching bodies, the contact rows of the row all push in the same pass, so the blow
+is shared out as if the row were one lump: the struck end and the middle move off together
+and the bounce of the first contact (contact_restitution.py) cannot undo that (a five-disc
+cradle at e = 1 kept 23 % of its swing energy after one impact).  A real row passes the blow
+on as a wave: each contact, in turn, sees its neighbour arrive and bounces.
+
+Here, for the bodies joined by bouncy contacts (e > 0) that pushed in this sub-step or touch
+(within the linear slop) to a contact bouncing now, the normal impulses the solve gave those contacts are taken back, and
+the contacts are then resolved as impacts one pair at a time, sweep after sweep, until none
+approaches: Guendelman, Bridson and Fedkiw's collision pass ("Nonconvex rigid bodies with
+stacking", SIGGRAPH 2003, sec. 5), with Newton's law v_n' = -e v_n for an approach faster
+than the restitution threshold and an inelastic stop below it.  Pairwise impacts at e <= 1
+never add kinetic energy, so five equal discs pass the first one's speed to the last and the
+middle stays still.  A lone bouncing pair keeps the manifold bounce of
+contact_restitution.py (its 2x2 block bounce and its figures are unchanged).
+
+The rows' impulses are taken back whole, a resting row's weight with them; the sweeps stop
+what still approaches (the inelastic stop), so a row resting on the ground keeps its support
+at the velocity level and its overlap is pushed out by the next sub-step's solve.  The
+impulses the impact pass applies are not carried to the next sub-step's warm start (an impact
+is not a load): those rows start it cold.  A cluster of more than MAX_ROW touching manifolds is
+a pile, not a row; it keeps the solve's answer.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .._jit import kernel
+from .body_rows import DCOS, DPX, DPY, DSIN, II, IM, VX, VY, W
+from .contact_soft import BOUNCED, JN, MASS_N, NX, NY, PT, RNA, RNB, RTA, RTB, SEP0
+
+# manifolds in a row at most: a row of n touching bodies struck from its far end needs n - 1
+# sweeps of the impact pass (the contacts are visited in table order), so its cost grows as
+# the square of the row; a larger cluster of touching bodies is a pile
+MAX_ROW = 64
+
+
+@kernel(inline="always")
+def _dynamic(SB, i):
+    return SB[i, IM] > 0.0 or SB[i, II] > 0.0
+
+
+@kernel
+def _touching(SB, C, R, k, slop):
+    """Whether a point of manifold k pushed in this sub-step or is within ``slop`` of touching
+    where the bodies are now (the separation of contact_soft.solve_contacts)."""
+    a = C.a[k]
+    b = C.b[k]
+    ddn = (SB[b, DPX] - SB[a, DPX]) * R[k, NX] + (SB[b, DPY] - SB[a, DPY]) * R[k, NY]
+    for q in range(C.count[k]):
+        o = q * PT
+        if R[k, o + JN] > 0.0:
+            return True
+        sep = (R[k, o + SEP0] + ddn + (SB[b, DCOS] - 1.0) * R[k, o + RTB] + SB[b, DSIN] * R[k, o + RNB]
+               - (SB[a, DCOS] - 1.0) * R[k, o + RTA] - SB[a, DSIN] * R[k, o + RNA])
+        if sep <= slop:
+            return True
+    return False
+
+
+@kernel
+def _push(SB, a, b, nx, ny, rna, rnb, j):
+    """Apply the normal impulse j (b pushed along n, a against it) at a point."""
+    SB[a, VX] -= SB[a, IM] * j * nx
+    SB[a, VY] -= SB[a, IM] * j * ny
+    SB[a, W] -= SB[a, II] * j * rna
+    SB[b, VX] += SB[b, IM] * j * nx
+    SB[b, VY] += SB[b, IM] * j * ny
+    SB[b, W] += SB[b, II] * j * rnb
+
+
+@kernel(runtime=True)
+def row_scratch(nc, n):
+    """The impact pass's scratch for one step: room for the bouncy manifolds at each dynamic
+    body (``_adjacency``), built at the step's first impact (the manifolds and the bodies'
+    kinds do not change in a step), so that a step without one pays only for this."""
+    start = np.empty(n + 2, dtype=np.int64)
+    start[n + 1] = 0  # not built yet
+    return start, np.empty(2 * nc, dtype=np.int64)
+
+
+@kernel(runtime=True)
+def _adjacency(SB, C, nc, n, start, at):
+    """Fill ``at[start[i]:start[i+1]]`` with the bouncy manifolds (e > 0) at dynamic body i, once."""
+    if start[n + 1] != 0:
+        return
+    start[n + 1] = 1
+    for i in range(n + 1):
+        start[i] = 0
+    for k in range(nc):
+        if C.e[k] > 0.0:
+            for i in (C.a[k], C.b[k]):
+                if _dynamic(SB, i):
+                    start[i + 1] += 1
+    for i in range(n):
+        start[i + 1] += start[i]
+    fill = start[:n].copy()
+    for k in range(nc):
+        if C.e[k] > 0.0:
+            for i in (C.a[k], C.b[k]):
+                if _dynamic(SB, i):
+                    at[fill[i]] = k
+                    fill[i] += 1
+
+
+@kernel(runtime=True)
+def _rows(SB, C, R, nc, due, slop, start, at):
+    """The manifolds of the rows: each bouncy manifold bouncing now (``due``) with the bouncy
+    manifolds touching it through dynamic bodies (``_touching``), found breadth first; a row
+    is kept when it has two manifolds or more and at most MAX_ROW (a larger cluster is a pile,
+    not a row: it keeps the solve's answer, and the search stops there).  Returns the mask and
+    the rows' manifolds in the order found: outward from the struck contact, the order in which
+    an impact travels, so that one sweep of the impact pass usually carries it to the end."""
+    rows = np.zeros(nc, dtype=np.bool_)
+    _adjacency(SB, C, nc, len(start) - 2, start, at)
+    seen = np.zeros(nc, dtype=np.bool_)
+    queue = np.empty(nc, dtype=np.int64)
+    order = np.empty(nc, dtype=np.int64)
+    m = 0
+    for d in range(nc):
+        if not due[d] or seen[d] or C.e[d] <= 0.0:
+            continue
+        seen[d] = True
+        queue[0] = d
+        head = 0
+        tail = 1
+        while head < tail and tail <= MAX_ROW:
+            k = queue[head]
+            head += 1
+            for i in (C.a[k], C.b[k]):
+                if not _dynamic(SB, i):
+                    continue
+                for x in range(start[i], start[i + 1]):
+                    j = at[x]
+                    if not seen[j] and (due[j] or _touching(SB, C, R, j, slop)):
+                        seen[j] = True
+                        queue[tail] = j
+                        tail += 1
+        if head == tail and 2 <= tail <= MAX_ROW:
+            for x in range(tail):
+                rows[queue[x]] = True
+                order[m] = queue[x]
+                m += 1
+    return rows, order[:m]
+
+
+@kernel(runtime=True)
+def chain_impacts(c, p, SB, C, R, due, start, at):
+    """Resolve the rows of touching bodies struck in this sub-step pair by pair (module doc);
+    returns which manifolds it resolved (the bounce of contact_restitution.py skips them).
+    ``start, at``: the step's ``row_scratch``."""
+    rows, order = _rows(SB, C, R, c.nc, due, c.slop, start, at)
+    m = len(order)
+    if m == 0:
+        return rows
+    for k in order:  # the solve's normal impulses of this sub-step, taken back
+        for q in range(C.count[k]):
+            o = q * PT
+            _push(SB, C.a[k], C.b[k], R[k, NX], R[k, NY], R[k, o + RNA], R[k, o + RNB], -R[k, o + JN])
+            R[k, o + JN] = 0.0
+            R[k, o + BOUNCED] = 1.0
+    threshold = p.restitution_threshold
+    for _ in range(m):
+        struck = False
+        for k in order:
+            a = C.a[k]
+            b = C.b[k]
+            nx = R[k, NX]
+            ny = R[k, NY]
+            for q in range(C.count[k]):
+                o = q * PT
+                rna = R[k, o + RNA]
+                rnb = R[k, o + RNB]
+                vn = ((SB[b, VX] - SB[a, VX]) * nx + (SB[b, VY] - SB[a, VY]) * ny
+                      + SB[b, W] * rnb - SB[a, W] * rna)
+                if vn >= 0.0:
+                    continue
+                e = C.e[k] if -vn > threshold else 0.0
+                _push(SB, a, b, nx, ny, rna, rnb, -(1.0 + e) * R[k, o + MASS_N] * vn)
+                struck = struck or e > 0.0
+        if not struck:
+            break
+    return rows
