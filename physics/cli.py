@@ -339,6 +339,8 @@ def info(args) -> int:
         print(f"              ({data['integrator_note']})")
     print(f"  gravity:    {list(world.gravity)}   dt: {world.dt:g} s")
     print("  settings:   " + ", ".join(f"{k}={v}" for k, v in data["settings"].items()))
+    for k, c in data["chosen"].items():  # chosen from the scene's content, where the file set none
+        print(f"  chosen:     {k}={c['value']} ({c['why']}; set it to override)")
     print("  stages:     " + " -> ".join(data["stages"]))
     return 0
 

@@ -72,18 +72,63 @@ def declare(*settings: Setting) -> dict[str, Setting]:
 
 class ModeValues:
     """The values of one mode's settings in one world, and a version bumped on every change
-    (so the step reloads the mode's parameter record only when a value changed)."""
+    (so the step reloads the mode's parameter record only when a value changed).
 
-    __slots__ = ("decl", "values", "version")
+    ``values`` are the declared defaults and what the user assigned (``explicit``: the names
+    assigned); ``fitted`` are values the world chose from the scene's content (name ->
+    (value, why): SolverMode.fit).  A fitted value is in force only where the user assigned
+    nothing (a user's setting always wins); ``effective()`` is what the step runs with."""
 
-    def __init__(self, decl: dict[str, Setting]):
+    __slots__ = ("decl", "values", "version", "explicit", "fitted", "fitted_at", "refit")
+
+    def __init__(self, decl: dict[str, Setting], refit=None):
         self.decl = decl
         self.values = {k: s.default for k, s in decl.items()}
         self.version = 0
+        self.explicit: set = set()
+        self.fitted: dict = {}
+        self.fitted_at = None  # the world's edit count the fit was made at (Pipeline.fitted)
+        self.refit = refit  # brings ``fitted`` up to date with the world's scene (World._settings_store)
+
+    def __getstate__(self):  # a copy or an unpickled one is detached from its world (no refit)
+        return {k: getattr(self, k) for k in self.__slots__ if k != "refit"}
+
+    def __setstate__(self, state):
+        self.refit = None
+        for k, v in state.items():
+            setattr(self, k, v)
 
     def assign(self, key, value) -> None:
         self.values[key] = self.decl[key].coerce(value)
+        self.explicit.add(key)
         self.version += 1
+
+    def unset(self, key) -> None:
+        """Back to the default, or to the value the scene calls for."""
+        self.values[key] = self.decl[key].default
+        self.explicit.discard(key)
+        self.version += 1
+
+    def fit(self, chosen: dict) -> None:
+        """The values the scene calls for now (name -> (value, why)); a change bumps the version."""
+        if chosen != self.fitted:
+            self.fitted = chosen
+            self.version += 1
+
+    def in_force(self) -> dict:
+        """The fitted values in force (name -> (value, why)): those the user did not assign."""
+        if self.refit is not None:
+            self.refit(self)
+        return {k: vw for k, vw in self.fitted.items() if k not in self.explicit}
+
+    def effective(self) -> dict:
+        """The values the step runs with: the fitted ones in force over ``values``."""
+        chosen = self.in_force()
+        if not chosen:
+            return self.values
+        out = dict(self.values)
+        out.update({k: v for k, (v, _) in chosen.items()})
+        return out
 
 
 class ModeSettings:
@@ -121,8 +166,11 @@ class ModeSettings:
             raise UnknownSetting(f"solver '{self._solver}' has no setting {shown(key)}; it has {list(self._decl)}")
 
     def __getitem__(self, key):
+        """The value the step runs with: the user's, else the one the scene calls for (``chosen``),
+        else the default."""
         self._check(key)
-        return self._values[key]
+        chosen = self._store.in_force().get(key)
+        return self._values[key] if chosen is None else chosen[0]
 
     def __setitem__(self, key, value):
         self._check(key)
@@ -137,8 +185,38 @@ class ModeSettings:
     def __contains__(self, key):
         return isinstance(key, str) and key in self._decl
 
+    def __delitem__(self, key):
+        """Forget the user's value: back to the default, or to the value the scene calls for."""
+        self._check(key)
+        self._store.unset(key)
+
     def items(self):
-        return [(k, self._values[k]) for k in self._decl]
+        eff = self._store.effective()
+        return [(k, eff[k]) for k in self._decl]
+
+    def chosen(self) -> dict:
+        """The values the world chose from the scene's content and runs with, because the user set
+        none of them: ``{"substeps": (8, "thin shapes: ...")}`` (SolverMode.fit).  Assigning a
+        setting overrides its choice; ``del settings[name]`` hands it back."""
+        return self._store.in_force()
+
+    def fitted(self) -> dict:
+        """Every value the scene calls for, in force or overridden by the user's (``chosen``)."""
+        self._store.in_force()
+        return dict(self._store.fitted)
+
+    def is_set(self, key) -> bool:
+        """Whether the user assigned this setting (a scene file's settings count as assigned)."""
+        self._check(key)
+        return key in self._store.explicit
+
+    def assigned(self) -> dict:
+        """What a scene file keeps: the values that differ from the default, and a value the user
+        set over one the scene calls for (a chosen value is chosen again when the file is loaded)."""
+        st = self._store
+        st.in_force()
+        return {k: st.values[k] for k in self._decl
+                if not _same(st.values[k], self._decl[k].default) or (k in st.explicit and k in st.fitted)}
 
     def keys(self):
         return list(self._decl)
@@ -166,3 +244,8 @@ class ModeSettings:
 
     def __repr__(self):
         return f"ModeSettings({self._solver}, {self.to_dict()})"
+
+
+def _same(a, b) -> bool:
+    """Equal as setting values (``coerce`` gives each setting one type, so the types match too)."""
+    return type(a) is type(b) and a == b

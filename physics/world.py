@@ -50,6 +50,8 @@ def _tolerance(field: str, doc: str = ""):
     def put(self, value) -> None:
         setattr(self, private, finite_num(value, field, lo=0.0))
         self._pipeline.dirty = True
+        for vals in self._settings.values():  # the settings a scene calls for are in slops
+            vals.fitted_at = None
     return property(get, put, doc=doc)
 
 
@@ -249,7 +251,8 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
     def _settings_store(self, solver: str) -> ModeValues:
         vals = self._settings.get(solver)
         if vals is None:
-            vals = self._settings[solver] = ModeValues(solvers.get(solver).settings)
+            mode = solvers.get(solver)
+            vals = self._settings[solver] = ModeValues(mode.settings, lambda v: self._pipeline.fitted(self, mode))
         return vals
 
     @property

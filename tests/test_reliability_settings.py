@@ -47,7 +47,10 @@ def test_a_figure_keeps_the_substeps_its_id_names():
     ``substeps12`` figures name theirs, so a run under ``substeps=8`` must still step them at 12."""
     _, _, own = run_ours("cart", 0.05, substeps=12, scene_kw={"substeps": 12}, settings={"substeps": 8})
     _, _, rest = run_ours("small_stack", 0.05, settings={"substeps": 8})
-    _, _, stock = run_ours("small_stack", 0.05)
+    _, _, stock = run_ours("vertical_stack", 0.05)
+    _, _, small = run_ours("small_stack", 0.05)
     assert own.world.settings["substeps"] == 12
     assert rest.world.settings["substeps"] == 8
-    assert stock.world.settings["substeps"] == 4
+    # with no count given the world chooses: 4 for 1 m boxes, 8 for 1 cm ones (solvers/soft_step/fit.py)
+    assert stock.world.settings["substeps"] == 4 and stock.world.settings.chosen() == {}
+    assert small.world.settings["substeps"] == 8 and "small" in small.world.settings.chosen()["substeps"][1]

@@ -155,16 +155,46 @@ class SolverSection(Section):
                                   lambda x, m=mode, n=name: w.settings_for(m).__setitem__(n, x),
                                   lambda m=mode, n=name: w.settings_for(m)[n])
 
+    def hand_back(self, w, name):
+        """Forget the user's value of a setting the world chooses from the scene, undoably."""
+        mode = w.solver
+        mine = w.settings_for(mode)
+
+        def put(x, n=name):
+            if x is None:
+                del mine[n]
+            else:
+                mine[n] = x
+        self.app.editor.set_world(f"{mode}.{name}", None, put, lambda n=name: mine[n] if mine.is_set(n) else None)
+
     def settings(self, w):
         settings = w.settings
+        chosen = settings.chosen()  # what the world chose from the scene (solvers/soft_step/fit.py)
+        self.app.ui_values["solver_chosen"] = {k: f"{v} ({why})" for k, (v, why) in chosen.items()}
         for name, decl in settings.declared().items():
             ch, v = setting_widget(f"{name}##{w.solver}", decl, settings[name])
+            record(self.app, f"setting:{name}")
             ch = typed(self.app, name, ch, integer=isinstance(decl.default, int))
             if decl.doc and imgui.is_item_hovered():
                 imgui.set_tooltip(decl.doc)
             if ch:
                 self.set_setting(w, name, v)
-        if imgui.button("Defaults##solver"):
+        for name in settings.declared():  # below the fields, so that none moves when a line goes
+            if name not in chosen:
+                self.app.ui_rects.pop(f"solver_chosen:{name}", None)
+                continue
+            imgui.push_text_wrap_pos(0)
+            imgui.text_colored(DIM, f"{name} {chosen[name][0]} chosen for this scene: {chosen[name][1]}; "
+                                    "set it to override")
+            imgui.pop_text_wrap_pos()
+            record(self.app, f"solver_chosen:{name}")
+        fitted = settings.fitted()
+        pressed = imgui.button("Defaults##solver")
+        record(self.app, "solver_defaults")
+        if pressed:
             for name, decl in settings.declared().items():
-                if settings[name] != decl.default:
+                if name in fitted:  # back to the world's own choice
+                    if settings.is_set(name):
+                        self.hand_back(w, name)
+                elif settings[name] != decl.default:
                     self.set_setting(w, name, decl.default)

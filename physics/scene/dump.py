@@ -158,8 +158,7 @@ def body_names(world, also=()) -> dict:
 
 
 def world_dict(world) -> dict:
-    declared = world.settings.declared()
-    settings = {k: v for k, v in world.settings.items() if not _same(v, declared[k].default)}
+    settings = world.settings.assigned()  # a value the world chose from the scene is chosen again on loading
     out = {"gravity": list(world.gravity), "dt": world.dt, "solver": world.solver, "settings": settings,
            "integrator": world.integrator, "sleeping": world.sleeping}
     _put(out, "broadphase", world.broadphase, fmt.WORLD_DEFAULTS["broadphase"])

@@ -35,6 +35,12 @@ class SolverMode:
         """Advance bodies by ctx.dt: forces, contacts (store.contacts.cur), springs, positions."""
         raise NotImplementedError
 
+    def fit(self, world) -> dict:
+        """Settings the scene's content calls for, with the reason: name -> (value, why).  The
+        world runs with them where the user set nothing (physics/settings.py ModeValues); it asks
+        again after every edit.  Deterministic: a function of the world's bodies and shapes."""
+        return {}
+
     def push_speed(self, values: dict) -> float:
         """The largest speed (m/s) at which this mode's contacts push overlap apart, with its
         settings ``values``: the energy guard allows each overlapping contact the energy of

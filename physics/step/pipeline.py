@@ -102,14 +102,24 @@ class Pipeline:
         par = self._params.get(mode.name)
         if par is None:
             par = self._params[mode.name] = ModeParams(mode.settings, mode.derived, mode.record)
-        vals = world._settings_store(mode.name)
+        vals = self.fitted(world, mode)
         if par.version != vals.version:
-            par.load(vals.values, vals.version)
-            par.push_speed = mode.push_speed(vals.values)
+            eff = vals.effective()
+            par.load(eff, vals.version)
+            par.push_speed = mode.push_speed(eff)
         if par.push_speed != self._push_speed:  # another mode, or its setting changed
             self.ctx.set("push_speed", par.push_speed)
             self._push_speed = par.push_speed
         return par
+
+    def fitted(self, world, mode):
+        """The mode's values in ``world``, with what the scene calls for (SolverMode.fit) asked
+        again after each edit."""
+        vals = world._settings_store(mode.name)
+        if vals.fitted_at != self.edits:
+            vals.fit(mode.fit(world))
+            vals.fitted_at = self.edits
+        return vals
 
     # -- stages ---------------------------------------------------------
     def refresh_geometry(self, world, dt: float = 0.0) -> None:
@@ -290,7 +300,8 @@ class Pipeline:
         B = store.bodies.view
         kinds = {k: int(np.sum(B.kind[:n] == v)) for v, k in KIND_NAMES.items()}
         awake = int(np.sum((B.awake[:n] == 1) & (B.kind[:n] == DYNAMIC)))
-        values = world._settings_store(world.solver).values
+        vals = self.fitted(world, world._mode)
+        values = vals.effective()
         stages = []
         if n:
             bp = broadphase.resolve(world.broadphase, store.fixtures.n)
@@ -304,5 +315,7 @@ class Pipeline:
             "contacts": store.contacts.n, "solver": world.solver, "integrator": world.integrator,
             "integrator_note": solvers.unused_integrator(world.solver, world.integrator) or "",
             "settings": dict(values), "sleeping": world.sleeping,
+            # the settings the world chose from the scene (where the user set none), and why
+            "chosen": {k: {"value": v, "why": why} for k, (v, why) in vals.in_force().items()},
             "stages": stages,
         }

@@ -10,6 +10,7 @@ from ...constraints.softness import softness
 from ...settings import Setting, declare
 from ..base import SolverMode
 from ..joint_settings import GLOBAL as _GLOBAL, joint_solver_setting
+from .fit import fit as fit_substeps
 from .kernel import GLOBAL, soft_step_flat
 from .layout import LAYOUTS, ColouredScratch
 
@@ -107,6 +108,9 @@ class SoftStep(SolverMode):
             broken = self.coloured.step(ctx, par, store, self.R, self.SB, J, JW, JS)
         if J is not None:
             after_step(store, broken)
+
+    def fit(self, world):
+        return fit_substeps(world)  # more sub-steps for thin or small bodies (fit.py)
 
     def push_speed(self, values):
         # the biased rows target at most this separation speed (contact_soft.solve_contacts);
