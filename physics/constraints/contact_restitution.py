@@ -40,10 +40,10 @@ from .restitution_cluster import cap_clusters, save_velocities
 
 
 @kernel(runtime=True)
-def restitution_contacts(c, p, SB, C, R, V0, start, at):
+def restitution_contacts(c, p, SB, C, R, V0):
     """Bounce the points that first pushed since the last call (see the module doc), then cap
     each cluster of bodies bouncing together at its energy at the sub-step start ``V0``
-    (restitution_cluster.py).  ``start, at``: the step's restitution_chain.row_scratch."""
+    (restitution_cluster.py)."""
     threshold = p.restitution_threshold
     nc = c.nc
     due = np.zeros(nc, dtype=np.bool_)
@@ -61,7 +61,7 @@ def restitution_contacts(c, p, SB, C, R, V0, start, at):
     for k in range(nc):
         J0[k, 0] = R[k, JN]
         J0[k, 1] = R[k, PT + JN]
-    rows = chain_impacts(c, p, SB, C, R, due, start, at)  # rows of touching bodies struck (restitution_chain.py)
+    rows = chain_impacts(c, p, SB, C, R, due)  # rows of touching bodies struck (restitution_chain.py)
     for k in range(nc):
         if due[k] and not rows[k]:
             _restitution(SB, C, k, R, threshold, C.e[k])

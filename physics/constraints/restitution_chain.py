@@ -7,10 +7,10 @@ and the bounce of the first contact (contact_restitution.py) cannot undo that (a
 cradle at e = 1 kept 23 % of its swing energy after one impact).  A real row passes the blow
 on as a wave: each contact, in turn, sees its neighbour arrive and bounces.
 
-Here, for the bodies joined by bouncy contacts (e > 0) that pushed in this sub-step or touch
-(within the linear slop) to a contact bouncing now, the normal impulses the solve gave those contacts are taken back, and
-the contacts are then resolved as impacts one pair at a time, sweep after sweep, until none
-approaches: Guendelman, Bridson and Fedkiw's collision pass ("Nonconvex rigid bodies with
+Here, for the bodies joined to a contact bouncing now by bouncy contacts (e >= ROW_RESTITUTION)
+that pushed in this sub-step or touch (within the linear slop), the normal impulses the solve
+gave those contacts are taken back, and the contacts are then resolved as impacts one pair at a
+time, sweep after sweep, until none approaches: Guendelman, Bridson and Fedkiw's collision pass ("Nonconvex rigid bodies with
 stacking", SIGGRAPH 2003, sec. 5), with Newton's law v_n' = -e v_n for an approach faster
 than the restitution threshold and an inelastic stop below it.  Pairwise impacts at e <= 1
 never add kinetic energy, so five equal discs pass the first one's speed to the last and the
@@ -22,7 +22,8 @@ what still approaches (the inelastic stop), so a row resting on the ground keeps
 at the velocity level and its overlap is pushed out by the next sub-step's solve.  The
 impulses the impact pass applies are not carried to the next sub-step's warm start (an impact
 is not a load): those rows start it cold.  A cluster of more than MAX_ROW touching manifolds is
-a pile, not a row; it keeps the solve's answer.
+a pile, not a row, and contacts below ROW_RESTITUTION are not part of one: they keep the
+solve's answer.
 """
 from __future__ import annotations
 
@@ -36,6 +37,11 @@ from .contact_soft import BOUNCED, JN, MASS_N, NX, NY, PT, RNA, RNB, RTA, RTB, S
 # sweeps of the impact pass (the contacts are visited in table order), so its cost grows as
 # the square of the row; a larger cluster of touching bodies is a pile
 MAX_ROW = 64
+# the restitution of a row's contacts at least: below it a blow passed on pair by pair keeps
+# little more than the solve's shared answer (each pair impact keeps (1 + e^2) / 2 of the pair's
+# relative energy), while a struck resting pile of such bodies (a junk pile at e = 0.2-0.4) would
+# lose its support impulses for the sub-step and settle later
+ROW_RESTITUTION = 0.5
 
 
 @kernel(inline="always")
@@ -73,41 +79,24 @@ def _push(SB, a, b, nx, ny, rna, rnb, j):
 
 
 @kernel(runtime=True)
-def row_scratch(nc, n):
-    """The impact pass's scratch for one step: room for the bouncy manifolds at each dynamic
-    body (``_adjacency``), built at the step's first impact (the manifolds and the bodies'
-    kinds do not change in a step), so that a step without one pays only for this."""
-    start = np.empty(n + 2, dtype=np.int64)
-    start[n + 1] = 0  # not built yet
-    return start, np.empty(2 * nc, dtype=np.int64)
+def _adjacency(SB, C, nc, n):
+    """(first, nxt): the bouncy manifolds (e >= ROW_RESTITUTION) at each dynamic body as linked
+    lists: body i's first slot is first[i], slot s holds manifold s // 2, the next is nxt[s] (-1 ends)."""
+    first = np.full(n, -1, dtype=np.int64)
+    nxt = np.empty(2 * nc, dtype=np.int64)
+    for k in range(nc):
+        if C.e[k] >= ROW_RESTITUTION:
+            for side in range(2):
+                i = C.a[k] if side == 0 else C.b[k]
+                if _dynamic(SB, i):
+                    s = 2 * k + side
+                    nxt[s] = first[i]
+                    first[i] = s
+    return first, nxt
 
 
 @kernel(runtime=True)
-def _adjacency(SB, C, nc, n, start, at):
-    """Fill ``at[start[i]:start[i+1]]`` with the bouncy manifolds (e > 0) at dynamic body i, once."""
-    if start[n + 1] != 0:
-        return
-    start[n + 1] = 1
-    for i in range(n + 1):
-        start[i] = 0
-    for k in range(nc):
-        if C.e[k] > 0.0:
-            for i in (C.a[k], C.b[k]):
-                if _dynamic(SB, i):
-                    start[i + 1] += 1
-    for i in range(n):
-        start[i + 1] += start[i]
-    fill = start[:n].copy()
-    for k in range(nc):
-        if C.e[k] > 0.0:
-            for i in (C.a[k], C.b[k]):
-                if _dynamic(SB, i):
-                    at[fill[i]] = k
-                    fill[i] += 1
-
-
-@kernel(runtime=True)
-def _rows(SB, C, R, nc, due, slop, start, at):
+def _rows(SB, C, R, nc, n, due, slop):
     """The manifolds of the rows: each bouncy manifold bouncing now (``due``) with the bouncy
     manifolds touching it through dynamic bodies (``_touching``), found breadth first; a row
     is kept when it has two manifolds or more and at most MAX_ROW (a larger cluster is a pile,
@@ -115,13 +104,18 @@ def _rows(SB, C, R, nc, due, slop, start, at):
     the rows' manifolds in the order found: outward from the struck contact, the order in which
     an impact travels, so that one sweep of the impact pass usually carries it to the end."""
     rows = np.zeros(nc, dtype=np.bool_)
-    _adjacency(SB, C, nc, len(start) - 2, start, at)
+    struck = False
+    for d in range(nc):
+        struck = struck or (due[d] and C.e[d] >= ROW_RESTITUTION)
+    if not struck:
+        return rows, np.empty(0, dtype=np.int64)
+    first, nxt = _adjacency(SB, C, nc, n)
     seen = np.zeros(nc, dtype=np.bool_)
     queue = np.empty(nc, dtype=np.int64)
     order = np.empty(nc, dtype=np.int64)
     m = 0
     for d in range(nc):
-        if not due[d] or seen[d] or C.e[d] <= 0.0:
+        if not due[d] or seen[d] or C.e[d] < ROW_RESTITUTION:
             continue
         seen[d] = True
         queue[0] = d
@@ -133,8 +127,10 @@ def _rows(SB, C, R, nc, due, slop, start, at):
             for i in (C.a[k], C.b[k]):
                 if not _dynamic(SB, i):
                     continue
-                for x in range(start[i], start[i + 1]):
-                    j = at[x]
+                x = first[i]
+                while x >= 0:
+                    j = x // 2
+                    x = nxt[x]
                     if not seen[j] and (due[j] or _touching(SB, C, R, j, slop)):
                         seen[j] = True
                         queue[tail] = j
@@ -148,11 +144,10 @@ def _rows(SB, C, R, nc, due, slop, start, at):
 
 
 @kernel(runtime=True)
-def chain_impacts(c, p, SB, C, R, due, start, at):
+def chain_impacts(c, p, SB, C, R, due):
     """Resolve the rows of touching bodies struck in this sub-step pair by pair (module doc);
-    returns which manifolds it resolved (the bounce of contact_restitution.py skips them).
-    ``start, at``: the step's ``row_scratch``."""
-    rows, order = _rows(SB, C, R, c.nc, due, c.slop, start, at)
+    returns which manifolds it resolved (the bounce of contact_restitution.py skips them)."""
+    rows, order = _rows(SB, C, R, c.nc, c.n, due, c.slop)
     m = len(order)
     if m == 0:
         return rows

@@ -102,7 +102,9 @@ class Pipeline:
         par = self._params.get(mode.name)
         if par is None:
             par = self._params[mode.name] = ModeParams(mode.settings, mode.derived, mode.record)
-        vals = self.fitted(world, mode)
+        vals = world._settings_store(mode.name)
+        if vals.fitted_at != self.edits:  # (self.fitted, inline: this runs at every step)
+            self.fitted(world, mode)
         if par.version != vals.version:
             eff = vals.effective()
             par.load(eff, vals.version)

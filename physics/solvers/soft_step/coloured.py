@@ -26,7 +26,6 @@ from ...constraints.rotation_cap import PIVOT_COLUMNS
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
-from ...constraints.restitution_chain import row_scratch
 from ...constraints.restitution_cluster import save_velocities
 from ...constraints.springs.substep import solve_springs
 from .kernel import GLOBAL
@@ -66,7 +65,6 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
         if C.e[k] != 0.0:
             bouncy = True
             break
-    start, at = row_scratch(c.nc if bouncy else 0, n)  # restitution_chain.py
     V0 = np.empty((n if bouncy or J is not None else 0, PIVOT_COLUMNS))
     if J is not None:
         save_pivots(c, B, J, JW, V0)
@@ -98,7 +96,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
                 solve_joints(c, B, J, JW, JS, np.bool_(False), p.inv_h, eq_global)
         if bouncy:  # restitution works on the rows: hand them over and take its impulses back
             unpack(C, W, order, slots, R)
-            restitution_contacts(c, p, SB, C, R, V0, start, at)
+            restitution_contacts(c, p, SB, C, R, V0)
             repack_normal(C, R, order, slots, W)
     unpack(C, W, order, slots, R)
     store_impulses(c, C, R)

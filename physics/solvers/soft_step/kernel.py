@@ -47,7 +47,6 @@ from ...constraints.rotation_cap import PIVOT_COLUMNS
 from ...constraints.joints.sync import save_start
 from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
-from ...constraints.restitution_chain import row_scratch
 from ...constraints.restitution_cluster import save_velocities
 from ...constraints.springs.substep import solve_springs
 from ...store.flat import bodies_view, contacts_view
@@ -56,7 +55,7 @@ from ...store.optional import optional_joints, optional_springs
 GLOBAL = 0  # index of "global" in the joint_solver setting's choices
 
 
-@kernel(runtime=True)  # the impact pass's scratch is allocated per step (restitution_chain.row_scratch)
+@kernel
 def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
     # (JW.SB is SB: the joints work on the same body rows as the contacts)
     """One step of ``ctx[0].dt`` in ``par[0].substeps`` sub-steps (see the module doc); returns the
@@ -89,7 +88,6 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
         if C.e[k] != 0.0:
             bouncy = True
             break
-    start, at = row_scratch(c.nc if bouncy else 0, n)  # restitution_chain.py
     for _ in range(p.substeps):
         integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
         if bouncy:
@@ -118,7 +116,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
                 refresh_rows(c, B, J, JW)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, no, p.inv_h, eq_global)
         if bouncy:
-            restitution_contacts(c, p, SB, C, R, V0, start, at)  # in the sub-step of first touch
+            restitution_contacts(c, p, SB, C, R, V0)  # in the sub-step of first touch
     store_impulses(c, C, R)
     if J is not None:
         broken = store_joints(c, J, JW, p.inv_h)
