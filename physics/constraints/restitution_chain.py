@@ -10,12 +10,12 @@ on as a wave: each contact, in turn, sees its neighbour arrive and bounces.
 Here, for the bodies joined to a contact bouncing now by bouncy contacts (e >= ROW_RESTITUTION)
 that pushed in this sub-step or touch (within the linear slop), the normal impulses the solve
 gave those contacts are taken back, and the contacts are then resolved as impacts one pair at a
-time, sweep after sweep, until none approaches: Guendelman, Bridson and Fedkiw's collision pass ("Nonconvex rigid bodies with
-stacking", SIGGRAPH 2003, sec. 5), with Newton's law v_n' = -e v_n for an approach faster
-than the restitution threshold and an inelastic stop below it.  Pairwise impacts at e <= 1
-never add kinetic energy, so five equal discs pass the first one's speed to the last and the
-middle stays still.  A lone bouncing pair keeps the manifold bounce of
-contact_restitution.py (its 2x2 block bounce and its figures are unchanged).
+time, sweep after sweep, until none approaches: Guendelman, Bridson and Fedkiw's collision pass
+("Nonconvex rigid bodies with stacking", SIGGRAPH 2003, sec. 5), with Newton's law
+v_n' = -e v_n for an approach faster than the restitution threshold and an inelastic stop below.
+Pairwise impacts at e <= 1 never add kinetic energy, so five equal discs pass the first one's
+speed to the last and the middle stays still.  A lone bouncing pair keeps the manifold bounce
+of contact_restitution.py (its 2x2 block bounce and its figures are unchanged).
 
 The rows' impulses are taken back whole, a resting row's weight with them; the sweeps stop
 what still approaches (the inelastic stop), so a row resting on the ground keeps its support
@@ -33,9 +33,9 @@ from .._jit import kernel
 from .body_rows import DCOS, DPX, DPY, DSIN, II, IM, VX, VY, W
 from .contact_soft import BOUNCED, JN, MASS_N, NX, NY, PT, RNA, RNB, RTA, RTB, SEP0
 
-# manifolds in a row at most: a row of n touching bodies struck from its far end needs n - 1
-# sweeps of the impact pass (the contacts are visited in table order), so its cost grows as
-# the square of the row; a larger cluster of touching bodies is a pile
+# manifolds in a row at most: the sweeps visit a row outward from the struck contact, but a
+# branching row (a body touching three) may need up to one sweep per manifold, so the cost can
+# grow as the square of the row; a larger cluster of touching bodies is a pile
 MAX_ROW = 64
 # the restitution of a row's contacts at least: below it a blow passed on pair by pair keeps
 # little more than the solve's shared answer (each pair impact keeps (1 + e^2) / 2 of the pair's
