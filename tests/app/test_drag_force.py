@@ -19,7 +19,8 @@ from test_tools import to_screen
 
 pytestmark = pytest.mark.app
 
-#: the modes whose drag is capped at 10 weights (app/tools/drag_force.py): there the pyramid stands
+#: the stiff modes, whose drag is capped at 10 (penalty) and 5 (hybrid) weights (app/tools/drag_force.py):
+#: there the pyramid stands
 STIFF = ("penalty", "hybrid")
 HEXAGON = 110        # the default scene's body (by place) that fell onto the pyramid's left side
 
