@@ -32,6 +32,7 @@ import numpy as np
 from .._jit import kernel
 from .body_rows import DCOS, DPX, DPY, DSIN, II, IM, VX, VY, W
 from .contact_soft import BOUNCED, JN, MASS_N, NX, NY, PT, RNA, RNB, RTA, RTB, SEP0
+from .restitution_cluster import _dynamic  # a body that moves (the clusters' test)
 
 # manifolds in a row at most: the sweeps visit a row outward from the struck contact, but a
 # branching row (a body touching three) may need up to one sweep per manifold, so the cost can
@@ -42,11 +43,6 @@ MAX_ROW = 64
 # relative energy), while a struck resting pile of such bodies (a junk pile at e = 0.2-0.4) would
 # lose its support impulses for the sub-step and settle later
 ROW_RESTITUTION = 0.5
-
-
-@kernel(inline="always")
-def _dynamic(SB, i):
-    return SB[i, IM] > 0.0 or SB[i, II] > 0.0
 
 
 @kernel
