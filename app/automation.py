@@ -55,7 +55,7 @@ def _joints(app):
              "screen": [float(sp[0]), float(app.height - sp[1])], "broken": j.broken,
              "reaction_force": j.reaction_force,
              "params": {n: param_value(j, n) for n in jp.PARAMS[j.kind]}}
-        if j.kind in ("revolute", "wheel", "prismatic", "distance"):
+        if "speed" in jp.KINDS[j.kind].readouts:
             d["speed"] = j.speed
         out.append(d)
     return out

@@ -7,6 +7,7 @@ import time
 import numpy as np
 
 import physics
+from physics import joint_params as jp
 
 from .body_colors import SetColor, checked_rgb, from_metadata, to_metadata
 from .clipboard import Paste, copy_bodies, paste_offset, selected_bodies
@@ -29,12 +30,13 @@ MOTOR_PINS_MAX = 500      # more joints than this: motors are drawn as plain pin
 
 
 def motor_pins(world) -> dict:
-    """{joint id: angle of the body its motor turns} for the hinges and wheels whose motor is on."""
+    """{joint id: angle of the body its motor turns} for the joints whose angular motor is on
+    (hinges, wheels: a wheel's motor turns body_b, the hub; the others' body_a)."""
     joints = world.joints
     if len(joints) > MOTOR_PINS_MAX:
         return {}
     return {j.id: (j.body_b.angle if j.kind == "wheel" else j.body_a.angle) for j in joints
-            if j.kind in ("revolute", "wheel") and j.max_motor_torque > 0}
+            if jp.KINDS[j.kind].motor == "angular" and j.max_motor_torque > 0}
 
 
 class Editor:

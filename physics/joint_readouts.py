@@ -1,6 +1,7 @@
 """Joint geometry and readouts that only some kinds have: angle, axis, translation, length, ...
 
-Each property is written once, on ``Readouts``; ``KINDS`` says which kinds have it, and each
+Each property is written once, on ``Readouts``; ``KINDS`` says which kinds have it (from each
+kind's ``readouts`` in physics/joint_params.py), and each
 kind's class (physics/joint_kinds.py) takes only those, so a hinge has no ``translation`` at
 all: ``dir()``, ``help()`` and the reference show what a kind really offers, and asking for
 another kind's readout is an AttributeError naming the kinds that have it (physics/joint.py).
@@ -13,22 +14,12 @@ import math
 
 import numpy as np
 
+from .joint_params import KINDS as KIND_DECL
 from .store.joints import MOTOR_ROW
 from .validate import finite_num, finite_vec
 
-#: the kinds that have each property of Readouts
-KINDS = {
-    "reference_angle": ("revolute", "prismatic", "weld", "wheel"),
-    "local_axis": ("prismatic", "wheel"),
-    "axis": ("prismatic", "wheel"),
-    "angle": ("revolute", "prismatic", "weld", "wheel", "motor"),
-    "translation": ("prismatic", "wheel"),
-    "length": ("distance",),
-    "rest_length": ("distance",),
-    "speed": ("revolute", "prismatic", "distance", "wheel"),
-    "motor_torque": ("revolute", "wheel"),
-    "motor_force": ("prismatic",),
-}
+def _having(name: str) -> tuple:
+    return tuple(k for k, d in KIND_DECL.items() if name in d.readouts)
 
 
 def _rot(q, v):
@@ -117,14 +108,16 @@ class Readouts:
 
     @property
     def speed(self) -> float:
-        """Rate of the joint's coordinate: rad/s for revolute and wheel (the motor's speed), m/s along
-        the axis for prismatic, m/s of the length for distance."""
-        if self._kind in ("revolute", "wheel"):
+        """Rate of what the joint's motor drives or its limits bound: rad/s of the relative angle
+        for a kind with an angular motor (revolute, wheel), m/s of the length for distance, m/s along
+        the axis for prismatic."""
+        decl = KIND_DECL[self._kind]
+        if decl.motor == "angular":
             wb = self._b.angular_velocity if self._b is not None else 0.0
             return self._a.angular_velocity - wb
         pa, pb, d = _separation(self)
         dv = _rel_velocity(self, pa, pb)
-        if self._kind == "distance":
+        if decl.coordinate == "length":
             n = np.hypot(*d)
             return float(dv @ d / n) if n > 0 else 0.0
         u = np.array(self.axis)
@@ -142,4 +135,6 @@ class Readouts:
         return _motor(self)
 
 
-assert set(KINDS) == {n for n, v in vars(Readouts).items() if isinstance(v, property)}
+#: the kinds that have each property of Readouts (in the properties' order)
+KINDS = {n: _having(n) for n, v in vars(Readouts).items() if isinstance(v, property)}
+assert {r for d in KIND_DECL.values() for r in d.readouts} <= set(KINDS)

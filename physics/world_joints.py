@@ -20,9 +20,6 @@ from .joint_kinds import CLASS_OF
 from .store.joints import BROKEN, COLLIDE, JOINT_KINDS
 from .validate import finite_num, finite_vec
 
-_POINT_KINDS = ("revolute", "prismatic", "weld", "wheel")
-_DEFAULT_AXIS = {"prismatic": (1.0, 0.0), "wheel": (0.0, 1.0)}
-
 
 def _unrot(q, v):
     c, s = math.cos(q), math.sin(q)
@@ -45,9 +42,9 @@ class JointsMixin:
         return self._store.joints
 
     def add_joint(self, kind: str, body_a: Body, body_b: Body | None = None, **parameters) -> Joint:
-        """Join ``body_a`` to ``body_b`` (None: to the world) with a joint of ``kind`` (revolute,
-        prismatic, weld, distance, wheel, motor, mouse).  Keywords: the kind's parameters
-        (physics/joint_params.py), its geometry (anchor/axis in world coordinates, or
+        """Join ``body_a`` to ``body_b`` (None: to the world) with a joint of ``kind`` (one of
+        physics/joint_params.py's ``KINDS``: revolute, prismatic, weld, distance, wheel, rotary,
+        motor, mouse).  Keywords: the kind's parameters (physics/joint_params.py), its geometry (anchor/axis in world coordinates, or
         local_anchor_a/local_anchor_b/local_axis/reference_angle), name, collide_connected,
         break_force, break_torque.  ValueError names a bad field; TypeError an unknown keyword.
 
@@ -132,8 +129,9 @@ class JointsMixin:
         qa = float(B.q[a._s])
         qb = 0.0 if b is None else float(B.q[b._s])
         geo = {}
-        if kind in _POINT_KINDS or kind == "distance":
-            if kind == "distance":
+        decl = jp.KINDS[kind]
+        if "anchor" in decl.geometry or "anchor_a" in decl.geometry:
+            if "anchor_a" in decl.geometry:
                 pa = finite_vec(kw.get("anchor_a", a.position), "anchor_a")
                 pb = finite_vec(kw.get("anchor_b", (0.0, 0.0) if b is None else b.position), "anchor_b")
             else:
@@ -143,13 +141,16 @@ class JointsMixin:
             lb = (self._given_local(b, kw["local_anchor_b"], "local_anchor_b") if "local_anchor_b" in kw
                   else self._local_point(b, pb))
             geo["la"], geo["lb"] = la, lb
-        if kind in _POINT_KINDS:
+        elif not decl.geometry:  # no anchors: the centres of mass (the world's end: where a's is now)
+            geo["la"] = np.zeros(2)
+            geo["lb"] = np.zeros(2) if b is not None else np.array(B.x[a._s], dtype=np.float64)
+        if "reference_angle" in decl.readouts:
             geo["ref"] = finite_num(kw.get("reference_angle", qa - qb), "reference_angle")
-        if kind in _DEFAULT_AXIS:
+        if decl.axis is not None:
             if "local_axis" in kw:
                 geo["axis"] = _unit(finite_vec(kw["local_axis"], "local_axis"), "local_axis")
             else:
-                geo["axis"] = _unit(_unrot(qa, finite_vec(kw.get("axis", _DEFAULT_AXIS[kind]), "axis")), "axis")
+                geo["axis"] = _unit(_unrot(qa, finite_vec(kw.get("axis", decl.axis), "axis")), "axis")
         if kind == "distance" and values["length"] is None:
             pa = B.x[a._s] + _unrot(-qa, geo["la"])
             pb = geo["lb"] if b is None else B.x[b._s] + _unrot(-qb, geo["lb"])

@@ -17,17 +17,19 @@ from .style import DIM, ENTER, RED
 
 #: step and fast step of a number field, by the parameter's rule
 STEPS = {"num": (0.1, 1.0), "nonneg": (0.1, 1.0), "limit": (0.05, 0.5), "length": (0.05, 0.5)}
-#: readouts by kind: (label, attribute, unit)
-READOUTS = {
-    "revolute": (("angle", "angle", "rad"), ("speed", "speed", "rad/s"), ("motor torque", "motor_torque", "N m")),
-    "prismatic": (("translation", "translation", "m"), ("speed", "speed", "m/s"), ("motor force", "motor_force", "N")),
-    "weld": (("angle", "angle", "rad"),),
-    "distance": (("length", "length", "m"), ("speed", "speed", "m/s")),
-    "wheel": (("translation", "translation", "m"), ("speed", "speed", "rad/s"),
-              ("motor torque", "motor_torque", "N m")),
-    "motor": (("angle", "angle", "rad"),),
-    "mouse": (),
-}
+#: units of the readouts the inspector shows (a speed's follows what it measures)
+UNITS = {"angle": "rad", "translation": "m", "length": "m", "motor_torque": "N m", "motor_force": "N"}
+
+
+def readout_rows(kind: str) -> tuple:
+    """(label, attribute, unit) of the readouts shown for ``kind``, from its declaration
+    (physics/joint_params.py): its coordinate, its speed, its motor's torque or force."""
+    d = jp.KINDS[kind]
+    rows = [(d.coordinate, d.coordinate, UNITS[d.coordinate])] if d.coordinate else []
+    if "speed" in d.readouts:
+        rows.append(("speed", "speed", "rad/s" if d.motor == "angular" else "m/s"))
+    rows += [(r.replace("_", " "), r, UNITS[r]) for r in ("motor_torque", "motor_force") if r in d.readouts]
+    return tuple(rows)
 
 
 def body_label(b):
@@ -37,7 +39,7 @@ def body_label(b):
 def readouts(j):
     """The joint's state after the last step, one dim line each; the reaction force shown with its
     magnitude (what a break_force is compared with)."""
-    for label, attr, unit in READOUTS[j.kind]:
+    for label, attr, unit in readout_rows(j.kind):
         imgui.text_colored(DIM, f"{label}: {getattr(j, attr):.4g} {unit}")
     fx, fy = j.reaction_force
     imgui.text_colored(DIM, f"reaction force: ({fx:.4g}, {fy:.4g}) N  |F| {math.hypot(fx, fy):.4g} N")
@@ -48,9 +50,7 @@ def readouts(j):
 
 def coordinate(j) -> float:
     """The joint's coordinate now: what its limits bound (angle, translation or length)."""
-    if j.kind == "revolute":
-        return j.angle
-    return j.length if j.kind == "distance" else j.translation
+    return getattr(j, jp.KINDS[j.kind].coordinate)
 
 
 def optional_number(app, j, name, value, rule, key):
@@ -98,14 +98,13 @@ def parameter(app, j, name, p):
         imgui.set_tooltip(p.doc)
 
 
-#: the geometry a kind lets the inspector move (world coordinates; the joint re-anchors there)
-GEOMETRY = {"revolute": ("anchor",), "weld": ("anchor",), "prismatic": ("anchor", "axis"),
-            "wheel": ("anchor", "axis"), "distance": ("anchor_a", "anchor_b")}
+#: the geometry the inspector moves, where a kind has it (world coordinates; the joint re-anchors there)
+WORLD_GEOMETRY = ("anchor", "axis", "anchor_a", "anchor_b")
 
 
 def geometry(app, j):
     """Where the joint holds (world point), and its axis: edited like the parameters."""
-    for name in GEOMETRY.get(j.kind, ()):
+    for name in (g for g in WORLD_GEOMETRY if g in jp.GEOMETRY[j.kind]):
         ch, v = imgui.input_float2(f"{name} (world)", list(getattr(j, name)), "%.4g", ENTER)
         ch = typed(app, name, ch)
         record(app, f"inspector:joint:{name}")

@@ -7,7 +7,10 @@ What each kind looks like (sizes in screen pixels, so a joint reads at any zoom)
 - distance: a rod (straight line) or, with a max_length, a rope that sags when slack;
 - wheel: the suspension axis through the chassis anchor with limit ticks, a coil from the mount to
   the hub, and the hub disc;
-- motor and mouse joints: a line between the two points.
+- motor and mouse joints: a line between the two points;
+- any other kind (declared in physics/joint_params.py, with no drawing of its own here): a line
+  between its two anchors (its bodies' centres of mass for a kind without anchors) and a dot at
+  each end.
 ``joint_segments`` gives the lines (the picking in app/picking.py uses the same ones).
 """
 from __future__ import annotations
@@ -20,7 +23,9 @@ from .colors import JOINT_BROKEN, JOINT_COLOR, JOINT_HUB, JOINT_SELECTED
 from .geometry import discs, thick_segments
 
 F32 = np.float32
-KIND = {name: k for k, name in enumerate(joint_params.PARAMS)}   # RenderData.joints["kind"] codes
+KIND = {name: k for k, name in enumerate(joint_params.KINDS)}   # RenderData.joints["kind"] codes
+#: the kinds drawn their own way below; the rest are drawn as a plain link
+DRAWN = [KIND[k] for k in ("revolute", "prismatic", "weld", "distance", "wheel", "motor", "mouse")]
 TICK_PX = 7.0         # half length of a limit tick and of the weld mark's strokes
 FREE_AXIS_PX = 45.0   # a free (unlimited) axis is drawn this far past the joint's travel
 MOUNT_PX = 32.0       # a wheel's suspension coil starts this far up the axis from the hub's rest place
@@ -87,8 +92,7 @@ def joint_segments(rows, scale):
         out.append((idx if k is None else idx[k], p0, p1))
 
     kind, pa, pb = rows["kind"], rows["anchor_a"], rows["anchor_b"]
-    for code in (KIND["revolute"], KIND["motor"], KIND["mouse"]):
-        s = kind == code
+    for s in (kind == KIND["revolute"], kind == KIND["motor"], kind == KIND["mouse"], ~np.isin(kind, DRAWN)):
         add(s, pa[s], pb[s])
     s = kind == KIND["weld"]
     r = TICK_PX / scale
@@ -157,6 +161,7 @@ def joint_markers(rows, scale, selected=(), hidden=(), motors=None):
     wheel = kind == KIND["wheel"]
     pin = np.isin(kind, [KIND["revolute"], KIND["prismatic"]]) & ~motor
     ends = np.isin(kind, [KIND["distance"], KIND["motor"], KIND["wheel"], KIND["weld"], KIND["mouse"]])
+    ends |= ~np.isin(kind, DRAWN)
     # (selection, centres, radius px, fill, spoke): plain markers first, the motors' spoked ones last
     groups = [(pin, pa, 5.5, col), (ends, pa, 3.0, col), (ends & ~wheel, pb, 3.0, col),
               (wheel & ~motor, pb, 5.0, dark), (motor, np.where(wheel[:, None], pb, pa), 7.5, dark)]

@@ -12,7 +12,7 @@ from __future__ import annotations
 from .._jit import kernel
 from ..store import DYNAMIC, KINEMATIC
 from ..store.flat import bodies_view, joints_view
-from ..store.joints import BROKEN, MOTOR, MOUSE, REVOLUTE, WHEEL
+from ..store.joints import ANGULAR_MOTOR, BROKEN, MOTOR, MOUSE
 from .checkpoint import spring_energy
 
 #: the slots of the sums array: kinetic, gravitational, elastic energy (J), dynamic mass (kg),
@@ -82,7 +82,7 @@ def motor_power(JF, JI, BF, BI, nj):
         wa = B.w[a]
         wb = B.w[b] if b >= 0 else 0.0
         w_rel = abs(wb - wa)
-        if k == REVOLUTE or k == WHEEL:
+        if ANGULAR_MOTOR[k]:
             p += J.max_motor[j] * w_rel
             continue
         dvx = (B.v[b, 0] if b >= 0 else 0.0) - B.v[a, 0]

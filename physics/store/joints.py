@@ -12,7 +12,7 @@ holds each row's accumulated impulse (N s or N m s) over ``JointTable.span``
 seconds: three equality rows (EQ0..EQ2: the point, angle or perpendicular
 rows that hold the joint together; a motor or mouse joint's own rows), then a
 spring, a motor and the lower and upper limit rows.  What the parameter fields
-mean per kind (``physics/joint_params.py`` names them for users):
+mean per kind (``physics/joint_params.py`` declares the kinds and names them for users):
 
 =========  =========================================================================
 revolute   lower/upper angle, motor_speed + max_motor (torque), hertz + zeta (spring)
@@ -30,11 +30,18 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..joint_params import KINDS, JOINT_KINDS
 from .table import Table, f8, i1, i4, i8
 from .table_view import view_class
 
-REVOLUTE, PRISMATIC, WELD, DISTANCE, WHEEL, MOTOR, MOUSE = range(7)
-JOINT_KINDS = ("revolute", "prismatic", "weld", "distance", "wheel", "motor", "mouse")
+#: a kind's code (``J.kind``) is its place in the declaration (physics/joint_params.py)
+CODE = {k: i for i, k in enumerate(JOINT_KINDS)}
+REVOLUTE, PRISMATIC, WELD, DISTANCE, WHEEL, MOTOR, MOUSE = (
+    CODE[k] for k in ("revolute", "prismatic", "weld", "distance", "wheel", "motor", "mouse"))
+#: per code, for compiled code (numba freezes global arrays as constants): the equality rows
+#: that hold the kind together, and whether its motor drives the relative angle
+EQUALITY = np.array([d.equality for d in KINDS.values()], np.int64)
+ANGULAR_MOTOR = np.array([d.motor == "angular" for d in KINDS.values()], np.bool_)
 
 ROWS = 7
 EQ0, EQ1, EQ2, SPRING, MOTOR_ROW, LOWER, UPPER = range(ROWS)

@@ -1,4 +1,6 @@
-"""The joint verbs for all joints at once: a solver mode calls one function per verb.
+"""The joint verbs for all joints at once: a solver mode calls one function per verb.  The
+branches on a joint's kind are all here (``joint_prepare``, ``joint_rows``); a kind's own work is
+in its module (``prepare_<kind>``, ``rows_<kind>``).
 
 - ``warm_start_joints``: every row's accumulated impulse applied again;
 - ``solve_joints(use_bias)``: the spring, motor and limit rows (and the motor and
@@ -17,17 +19,39 @@ import math
 
 from .jit import row_inline, row_kernel
 from ...store.joints import BROKEN, DISTANCE, MOTOR, MOUSE, PRISMATIC, REVOLUTE, ROWS, WELD, WHEEL
-from .distance import rows_distance
+from .distance import prepare_distance, rows_distance
 from .frame import arms, cross
 from .layout import KA, NX, NY
-from .motor import rows_motor, solve_motor_joint
-from .mouse import rows_mouse, solve_mouse
-from .prismatic import rows_prismatic
-from .revolute import rows_revolute
+from .motor import prepare_motor, rows_motor, solve_motor_joint
+from .mouse import prepare_mouse, rows_mouse, solve_mouse
+from .prismatic import prepare_prismatic, rows_prismatic
+from .revolute import prepare_revolute, rows_revolute
 from .rows import solve_equality, solve_free_rows, warm_start_rows
 from .system.solve import solve_system
-from .weld import rows_weld
-from .wheel import rows_wheel
+from .weld import prepare_weld, rows_weld
+from .wheel import prepare_wheel, rows_wheel
+
+
+@row_inline
+def joint_prepare(J, JW, j, h):
+    """Softness and clamps of joint j for a step of passes of span h (its kind's ``prepare_*``);
+    returns its row mask (which of its rows take part)."""
+    k = J.kind[j]
+    if k == REVOLUTE:
+        return prepare_revolute(J, JW, j, h)
+    if k == PRISMATIC:
+        return prepare_prismatic(J, JW, j, h)
+    if k == WELD:
+        return prepare_weld(J, JW, j, h)
+    if k == DISTANCE:
+        return prepare_distance(J, JW, j, h)
+    if k == WHEEL:
+        return prepare_wheel(J, JW, j, h)
+    if k == MOTOR:
+        return prepare_motor(J, JW, j, h)
+    if k == MOUSE:
+        return prepare_mouse(J, JW, j, h)
+    return 0
 
 
 @row_inline

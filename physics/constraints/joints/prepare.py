@@ -13,16 +13,11 @@ import math
 
 from .jit import row_entry, row_inline, row_kernel
 from ...store import DYNAMIC
-from ...store.joints import BROKEN, DISTANCE, MOTOR, MOUSE, PRISMATIC, REVOLUTE, WELD, WHEEL
+from ...store.joints import BROKEN, DISTANCE, EQUALITY
 from ..body_rows import DCOS, II
-from .distance import is_rod, prepare_distance
+from .dispatch import joint_prepare
+from .distance import is_rod
 from .layout import D0, MASS_ANG, RA0, RB0, SOFT_LIMIT, U0
-from .motor import prepare_motor
-from .mouse import prepare_mouse
-from .prismatic import prepare_prismatic
-from .revolute import prepare_revolute
-from .weld import prepare_weld
-from .wheel import prepare_wheel
 
 
 @row_entry
@@ -31,15 +26,9 @@ def equality_count(J, j):
     if J.flags[j] & BROKEN:
         return 0
     k = J.kind[j]
-    if k == REVOLUTE or k == PRISMATIC:
-        return 2
-    if k == WELD:
-        return 3
-    if k == WHEEL:
-        return 1
-    if k == DISTANCE and is_rod(J, j):
-        return 1
-    return 0
+    if k == DISTANCE and not is_rod(J, j):
+        return 0
+    return EQUALITY[k]
 
 
 @row_entry
@@ -105,21 +94,7 @@ def prepare_joints(c, B, J, JW, h, js0, js1, js2):
         F[j, SOFT_LIMIT] = js0
         F[j, SOFT_LIMIT + 1] = js1
         F[j, SOFT_LIMIT + 2] = js2
-        kind = J.kind[j]
-        if kind == REVOLUTE:
-            JW.mask[j] = prepare_revolute(J, JW, j, h)
-        elif kind == PRISMATIC:
-            JW.mask[j] = prepare_prismatic(J, JW, j, h)
-        elif kind == WELD:
-            JW.mask[j] = prepare_weld(J, JW, j, h)
-        elif kind == DISTANCE:
-            JW.mask[j] = prepare_distance(J, JW, j, h)
-        elif kind == WHEEL:
-            JW.mask[j] = prepare_wheel(J, JW, j, h)
-        elif kind == MOTOR:
-            JW.mask[j] = prepare_motor(J, JW, j, h)
-        elif kind == MOUSE:
-            JW.mask[j] = prepare_mouse(J, JW, j, h)
+        JW.mask[j] = joint_prepare(J, JW, j, h)
 
 
 @row_kernel

@@ -17,12 +17,10 @@ from .rows import clear_row, set_row
 from .soft_rows import rigid_row, spring_softness
 
 
-@row_part
-def prepare_revolute(J, JW, j, h):
-    """Softness and clamps for one step; returns the row mask."""
-    rigid_row(JW, j, 0)
-    rigid_row(JW, j, 1)
-    mask = (1 << EQ0) | (1 << EQ1)
+@row_inline
+def angular_prepare(J, JW, j, h, mask):
+    """Softness and clamps of the spring, motor and limit rows on the relative angle (shared with
+    the rotary joint), their bits added to ``mask``."""
     if J.hertz[j] > 0.0:
         spring_softness(JW, j, J.hertz[j], J.zeta[j], h)
         mask |= 1 << SPRING
@@ -36,9 +34,18 @@ def prepare_revolute(J, JW, j, h):
     return mask
 
 
+@row_part
+def prepare_revolute(J, JW, j, h):
+    """Softness and clamps for one step; returns the row mask."""
+    rigid_row(JW, j, 0)
+    rigid_row(JW, j, 1)
+    return angular_prepare(J, JW, j, h, (1 << EQ0) | (1 << EQ1))
+
+
 @row_inline
 def angular_rows(B, J, JW, j, ims, iia, iib):
-    """Spring, motor and limit rows on the relative angle (shared with the wheel's motor)."""
+    """Spring, motor and limit rows on the relative angle (shared with the wheel's motor and the
+    rotary joint)."""
     ang = relative_angle(B, J, j)
     set_row(JW, j, SPRING, 0.0, 0.0, 1.0, 1.0, ang, ims, iia, iib)
     set_row(JW, j, MOTOR_ROW, 0.0, 0.0, 1.0, 1.0, 0.0, ims, iia, iib)
