@@ -16,16 +16,15 @@ from .geometry.chain import Chain, ChainSegment
 from .geometry.decompose import decompose
 from .geometry.shapes import Circle, Polygon
 from .joint import Joint
-from .joint_kinds import (DistanceJoint, MotorJoint, MouseJoint, PrismaticJoint, RevoluteJoint, WeldJoint,
-                          WheelJoint)
+from . import joint_kinds
+from .joint_kinds import *  # noqa: F403  (the kinds' classes: RevoluteJoint, ..., joint_kinds.__all__)
 from .queries.hits import RayHit, ShapeHit
 from .spring import Spring
 from .world import World
 
 __all__ = ["World", "Body", "Fixture", "Spring", "Joint", "RayHit", "ShapeHit", "Polygon", "Circle", "Capsule", "Segment", "Chain", "ChainSegment", "decompose", "SceneError", "SimulationError",
-           "RevoluteJoint", "PrismaticJoint", "WeldJoint", "DistanceJoint", "WheelJoint", "MotorJoint", "MouseJoint",
            "ContactEvents", "ContactBeginEvent", "ContactHitEvent", "SensorEvents",
-           "load_scene", "save_scene", "solvers_available", "tune", "precompile"]
+           "load_scene", "save_scene", "solvers_available", "tune", "precompile"] + joint_kinds.__all__
 
 
 def load_scene(path):

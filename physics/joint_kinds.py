@@ -165,3 +165,6 @@ class MouseJoint(_KindJoint, kind="mouse"):
 
 
 assert tuple(CLASS_OF) == JOINT_KINDS  # every kind has a class, in the declaration's order
+#: the classes, exported by ``physics`` (a kind's class statement is all it takes)
+__all__ = ["RevoluteJoint", "PrismaticJoint", "WeldJoint", "DistanceJoint", "WheelJoint", "MotorJoint",
+           "MouseJoint"]

@@ -7,7 +7,8 @@ A page asks for one with an HTML comment alone on its line, ``<!-- stelkropp:NAM
 * ``cli ARGS``: the output of ``python -m physics ARGS`` (run in-process; ``--help`` too);
 * ``examples``: every script in ``examples/``: its docstring, how to run it and its source;
 * ``joint-params KIND``: a joint kind's parameters (name, default, meaning), its creation-only
-  geometry and its readouts, read from ``physics.joint_params`` and ``physics.joint_readouts``.
+  geometry and its readouts, read from ``physics.joint_params`` and ``physics.joint_readouts``;
+* ``joint-kinds``: every declared kind in turn: its class's reference and its ``joint-params``.
 
 An unknown NAME raises, so a typo fails the build instead of vanishing from the page.
 """
@@ -36,6 +37,8 @@ def expand(name: str, args: str, page: str) -> str:
         return examples()
     if name == "joint-params":
         return joint_params(args)
+    if name == "joint-kinds":
+        return joint_kinds()
     raise ValueError(f"{page}: unknown generated section 'stelkropp:{name}'")
 
 
@@ -124,6 +127,18 @@ def examples() -> str:
         out.append("    ```python")
         out.extend(("    " + line) if line else "" for line in src.splitlines())
         out.append("    ```\n")
+    return "\n".join(out)
+
+
+def joint_kinds() -> str:
+    """Each kind of physics/joint_params.py's declaration: its class (mkdocstrings' reference,
+    without members: the table lists them) and its parameter tables."""
+    from physics.joint_kinds import CLASS_OF
+    out = []
+    for kind, cls in CLASS_OF.items():
+        out += [f"::: physics.{cls.__name__}", "    options:", "      members: false",
+                "      inherited_members: false", "      heading_level: 3", "      show_bases: false", "",
+                joint_params(kind)]
     return "\n".join(out)
 
 
