@@ -29,8 +29,8 @@ Kind.__doc__ = """One joint kind's declaration.
 
 - ``params``: {public name: Param}, the keywords of ``add_joint`` and the handle's live properties;
 - ``geometry``: the creation-only keywords (world points and axis, or exact body-frame values);
-  with ``anchor`` the kind holds at one point, with ``anchor_a``/``anchor_b`` at two, with
-  neither it has no anchors (it acts between the centres of mass);
+  with ``anchor`` the kind has one anchor point on each body (coinciding at creation), with
+  ``anchor_a``/``anchor_b`` two given apart;
 - ``readouts``: the properties of physics/joint_readouts.py's ``Readouts`` it has; with
   ``reference_angle`` among them, the angle of a relative to b at creation is its zero;
 - ``coordinate``: the readout its limits bound (``angle``, ``translation``, ``length``) or None;

@@ -141,9 +141,6 @@ class JointsMixin:
             lb = (self._given_local(b, kw["local_anchor_b"], "local_anchor_b") if "local_anchor_b" in kw
                   else self._local_point(b, pb))
             geo["la"], geo["lb"] = la, lb
-        elif not decl.geometry:  # no anchors: the centres of mass (the world's end: where a's is now)
-            geo["la"] = np.zeros(2)
-            geo["lb"] = np.zeros(2) if b is not None else np.array(B.x[a._s], dtype=np.float64)
         if "reference_angle" in decl.readouts:
             geo["ref"] = finite_num(kw.get("reference_angle", qa - qb), "reference_angle")
         if decl.axis is not None:

@@ -9,8 +9,7 @@ What each kind looks like (sizes in screen pixels, so a joint reads at any zoom)
   the hub, and the hub disc;
 - motor and mouse joints: a line between the two points;
 - any other kind (declared in physics/joint_params.py, with no drawing of its own here): a line
-  between its two anchors (its bodies' centres of mass for a kind without anchors) and a dot at
-  each end.
+  between its two anchors and a dot at each end.
 ``joint_segments`` gives the lines (the picking in app/picking.py uses the same ones).
 """
 from __future__ import annotations
