@@ -164,7 +164,20 @@ class MouseJoint(_KindJoint, kind="mouse"):
     __slots__ = ()
 
 
+class RotaryJoint(_KindJoint, kind="rotary"):
+    """Acts on the relative angle of body_a and body_b alone and holds no point: an angular spring
+    (``spring_hertz``), a motor (``motor_speed``, ``max_motor_torque``) and angle limits
+    (``lower_angle``, ``upper_angle``), each optional (pymunk's DampedRotarySpring, SimpleMotor and
+    RotaryLimitJoint in one).  With body_b None it acts on body_a's angle in the world.  The
+    ``anchor`` only says where the joint is drawn and picked.
+
+    Same as ``world.add_joint("rotary", body_a, body_b, ...)`` on body_a's world.
+    """
+
+    __slots__ = ()
+
+
 assert tuple(CLASS_OF) == JOINT_KINDS  # every kind has a class, in the declaration's order
 #: the classes, exported by ``physics`` (a kind's class statement is all it takes)
 __all__ = ["RevoluteJoint", "PrismaticJoint", "WeldJoint", "DistanceJoint", "WheelJoint", "MotorJoint",
-           "MouseJoint"]
+           "MouseJoint", "RotaryJoint"]

@@ -130,6 +130,12 @@ KINDS = {
         readouts=(),
         coordinate=None, motor=None, equality=0, axis=None,
         doc="pulls a point of body_a towards a world target (a drag)"),
+    "rotary": Kind(
+        params={**_ANGLE_LIMITS, **_ANGULAR_MOTOR, **_SPRING},
+        geometry=("anchor", *_LOCAL, "reference_angle"),
+        readouts=("reference_angle", "angle", "speed", "motor_torque"),
+        coordinate="angle", motor="angular", equality=0, axis=None,
+        doc="the relative angle only: an angular spring, a motor and angle limits"),
 }
 
 #: the kinds in code order (``J.kind`` holds the index)

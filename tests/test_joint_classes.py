@@ -14,7 +14,7 @@ from physics.store.joints import JOINT_FIELDS, JOINT_KINDS
 
 CLASSES = {"revolute": physics.RevoluteJoint, "prismatic": physics.PrismaticJoint, "weld": physics.WeldJoint,
            "distance": physics.DistanceJoint, "wheel": physics.WheelJoint, "motor": physics.MotorJoint,
-           "mouse": physics.MouseJoint}
+           "mouse": physics.MouseJoint, "rotary": physics.RotaryJoint}
 
 # non-default values for each kind (body_b is None for the mouse joint)
 KEYWORDS = {
@@ -29,6 +29,8 @@ KEYWORDS = {
                   max_motor_torque=7.0, lower=-0.2, upper=0.2),
     "motor": dict(linear_offset=(0.3, -0.2), angular_offset=0.25, max_force=40.0, max_torque=9.0),
     "mouse": dict(target=(2.0, 1.0), hertz=4.0, damping_ratio=0.9, max_force=300.0),
+    "rotary": dict(anchor=(0.5, 0.0), lower_angle=-0.3, upper_angle=0.6, motor_speed=2.0, max_motor_torque=4.0,
+                   spring_hertz=1.0, spring_damping_ratio=0.2),
 }
 
 

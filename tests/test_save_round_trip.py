@@ -65,7 +65,7 @@ def _body(draw, w, i):
 
 
 def _joint(draw, w, a, b):
-    kind = draw(st.sampled_from(["revolute", "prismatic", "weld", "distance", "wheel", "motor"]))
+    kind = draw(st.sampled_from(["revolute", "prismatic", "weld", "distance", "wheel", "motor", "rotary"]))
     kw = {}
     if "anchor" in jp.GEOMETRY[kind]:
         kw["anchor"] = a.position
@@ -73,7 +73,7 @@ def _joint(draw, w, a, b):
         kw["axis"] = (0.0, 1.0)
     if kind == "weld" and draw(st.booleans()):
         kw["break_force"] = draw(st.sampled_from([1e-3, 1.0, 1e6]))
-    if kind == "revolute":
+    if kind in ("revolute", "rotary"):
         kw.update(motor_speed=draw(NUM), max_motor_torque=draw(st.floats(0, 5)))
     j = w.add_joint(kind, a, b, collide_connected=draw(st.booleans()), **kw)
     _try(lambda v: setattr(j, "name", v), draw(ANY_TEXT))

@@ -26,6 +26,7 @@ from .motor import prepare_motor, rows_motor, solve_motor_joint
 from .mouse import prepare_mouse, rows_mouse, solve_mouse
 from .prismatic import prepare_prismatic, rows_prismatic
 from .revolute import prepare_revolute, rows_revolute
+from .rotary import ROTARY, prepare_rotary, rows_rotary
 from .rows import solve_equality, solve_free_rows, warm_start_rows
 from .system.solve import solve_system
 from .weld import prepare_weld, rows_weld
@@ -51,6 +52,8 @@ def joint_prepare(J, JW, j, h):
         return prepare_motor(J, JW, j, h)
     if k == MOUSE:
         return prepare_mouse(J, JW, j, h)
+    if k == ROTARY:
+        return prepare_rotary(J, JW, j, h)
     return 0
 
 
@@ -70,8 +73,10 @@ def joint_rows(B, J, JW, j, a, b):
         rows_wheel(B, J, JW, j, a, b)
     elif k == MOTOR:
         rows_motor(B, J, JW, j, a, b)
-    else:
+    elif k == MOUSE:
         rows_mouse(B, J, JW, j, a, b)
+    elif k == ROTARY:
+        rows_rotary(B, J, JW, j, a, b)
 
 
 @row_kernel
