@@ -4,6 +4,9 @@ from __future__ import annotations
 
 from imgui_bundle import imgui
 
+from physics import joint_params as jp
+
+from ..tools.any_joint import KINDS as JOINT_TOOL_KINDS
 from .base import Section, record
 from .number_typing import typed
 from .style import DIM
@@ -18,7 +21,7 @@ class ToolsSection(Section):
 
     def draw(self):
         ed = self.app.editor
-        per_row = 5           # seventeen tools in four rows: the inspector below stays on screen
+        per_row = 5           # eighteen tools in four rows: the inspector below stays on screen
         gap = imgui.get_style().item_spacing.x
         width = (imgui.get_content_region_avail().x - (per_row - 1) * gap) / per_row
         for i, name in enumerate(ed.tool_names):
@@ -116,6 +119,19 @@ class ToolsSection(Section):
                 o.wheel_damping_ratio = v
         elif tool == "slider":
             _, o.slider_limits = imgui.checkbox("limit travel to the drag", o.slider_limits)
+        elif tool == "joint":
+            self.joint_kinds(o)
+
+    def joint_kinds(self, o):
+        """The joint tool's kind: one button per declared kind (physics/joint_params.py), three a row."""
+        for i, kind in enumerate(JOINT_TOOL_KINDS):
+            if i % 3:
+                imgui.same_line()
+            if imgui.radio_button(f"{kind}##joint_kind", o.joint_kind == kind):
+                o.joint_kind = kind
+            record(self.app, f"tools:joint_kind:{kind}")
+            if imgui.is_item_hovered():
+                imgui.set_tooltip(jp.KINDS[kind].doc)
 
     def drop(self):
         """A palette button dragged out of the panels and released over the scene drops a body there

@@ -30,6 +30,7 @@ class ToolOptions:
         self.wheel_damping_ratio = 0.7
         self.slider_limits = True        # slider tool: the dragged segment is the travel
         self.capsule_radius = 0.25       # capsule tool: the radius (m) of a dragged capsule
+        self.joint_kind = "rotary"       # joint tool: the kind it makes (any declared kind)
 
 
 def body_args(opts: ToolOptions, position, angle=0.0) -> dict:
