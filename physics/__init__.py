@@ -17,7 +17,7 @@ from .geometry.decompose import decompose
 from .geometry.shapes import Circle, Polygon
 from .joint import Joint
 from . import joint_kinds
-from .joint_kinds import *  # noqa: F403  (the kinds' classes: RevoluteJoint, ..., joint_kinds.__all__)
+from .joint_kinds import *  # (the kinds' classes: RevoluteJoint, ..., joint_kinds.__all__)
 from .queries.hits import RayHit, ShapeHit
 from .spring import Spring
 from .world import World

@@ -9,9 +9,9 @@ import math
 
 import numpy as np
 import pytest
+from builders import world
 
 import physics
-from builders import world
 from physics import joint_params as jp
 
 MODES = ("soft_step", "sequential_impulse", "impulse", "penalty", "hybrid")

@@ -33,19 +33,12 @@ class JointTool(DragJointTool):
         how = "drag from a body to the other end's point" if two else "click over one or two bodies (or drag)"
         return f"{self.kind}: {jp.KINDS[self.kind].doc}; {how}"
 
-    def release(self, p):
-        if self.start is None:
-            return
-        a, b, p0 = self.start
-        self.start = None
-        if not a.alive or (b is not None and not b.alive):
-            return
-        p1 = np.array(p, dtype=float)
-        dragged = np.hypot(*(p1 - p0)) * self.editor.camera.scale >= self.MIN_PX
-        self.finish(a, b, p0, p1 if dragged else None)
+    def clicked(self, a, b, p0):
+        self.finish(a, b, p0, None)
 
     def finish(self, a, b, p0, p1):
-        """The joint from the press point ``p0`` and the release point ``p1`` (None: a click)."""
+        """The joint from the press point ``p0`` and the release point ``p1`` (None: a click, or a
+        drag shorter than MIN_PX pixels)."""
         kind, geometry = self.kind, jp.GEOMETRY[self.kind]
         fields = {}
         if "anchor_a" in geometry:
@@ -62,7 +55,7 @@ class JointTool(DragJointTool):
             d = p1 - p0
             fields["axis"] = tuple(map(float, d / np.hypot(*d)))
         if a.kind == "static" and (b is None or b.kind == "static"):
-            self.editor.hint(f"nothing to join: the bodies here are static (they do not move)")
+            self.editor.hint("nothing to join: the bodies here are static (they do not move)")
             return
         add_joint(self.editor, kind, a, b, **fields)
 

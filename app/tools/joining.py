@@ -89,9 +89,13 @@ class DragJointTool(Tool):
             return
         p1 = np.array(p, dtype=float)
         if np.hypot(*(p1 - p0)) * self.editor.camera.scale < self.MIN_PX:
-            self.editor.hint(f"drag to {self.verb} (a click alone makes nothing)", error=False)
+            self.clicked(a, b, p0)
             return
         self.finish(a, b, p0, p1)
+
+    def clicked(self, a, b, p0):
+        """A press and release in one place: by default a hint that the tool needs a drag."""
+        self.editor.hint(f"drag to {self.verb} (a click alone makes nothing)", error=False)
 
     def finish(self, a, b, p0, p1):
         raise NotImplementedError

@@ -9,10 +9,10 @@ from __future__ import annotations
 import json
 
 import pytest
-
-import physics
 from sandbox_pixels import pink_pixels
 from test_joint_tools import W, ids, new_joint, pick_tool, to_screen
+
+import physics
 
 pytestmark = pytest.mark.app
 

@@ -6,9 +6,9 @@ Rows (store/joints.py): no equality rows; the spring, motor and limit rows are t
 """
 from __future__ import annotations
 
-from .jit import row_part
 from ...store.joints import CODE, EQ0, EQ1, EQ2
 from ..body_rows import II, IM
+from .jit import row_part
 from .revolute import angular_prepare, angular_rows
 from .rows import clear_row
 
