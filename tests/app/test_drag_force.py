@@ -8,7 +8,12 @@ for four fifths of its length, and 30 to 100 hexagon weights (125 to 416 N) push
 through its top rows.  Measured headless, the same drag: the top boxes end 10 to 25 m away in
 soft_step, sequential_impulse and impulse; dragged up and left, or straight up (away from the
 pile) at 100 weights, the pyramid's boxes move 0.01 m at most in soft_step and
-sequential_impulse; at 10 weights the hexagon stalls against the pile and no box moves 0.2 m."""
+sequential_impulse; at 10 weights the hexagon stalls against the pile and no box moves 0.2 m.
+
+The scene stays paused and is stepped by the Step key, the pointer moved between steps, so the
+drag is the same in every run however the frames fall. Dragged in real time, where the hexagon
+was when the drag began, and how the moves fell into frames, changed from run to run, and so
+did the outcome."""
 from __future__ import annotations
 
 import numpy as np
