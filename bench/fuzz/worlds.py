@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import math
+import random
 from dataclasses import dataclass, field
 
 import physics
@@ -98,6 +99,10 @@ def joint_params(rnd, kind: str, a) -> dict:
                 "spring_damping_ratio": zeta()}
     if kind == "wheel":
         return {"anchor": (x, y), "spring_hertz": hz(), "spring_damping_ratio": zeta()}
+    if kind == "rotary":
+        lo = rnd.uniform(-3, 0) if rnd.random() < 0.5 else None
+        return {"lower_angle": lo, "upper_angle": None if lo is None else lo + rnd.uniform(0, 3),
+                "spring_hertz": hz(), "spring_damping_ratio": zeta()}
     if kind == "motor":
         return {"max_force": log_uniform(rnd, (0.0, 6.0)), "max_torque": log_uniform(rnd, (0.0, 6.0)),
                 "angular_offset": rnd.uniform(-3, 3)}
@@ -119,6 +124,22 @@ def add_joints(rnd, w, bodies, plan) -> None:
         extra = {"break_force": log_uniform(rnd, (0.0, 6.0))} if rnd.random() < 0.3 else {}
         w.add_joint(kind, a, b, **joint_params(rnd, kind, a), **extra)
         plan.driven = plan.driven or kind in DRIVEN
+    add_rotary(rnd, w, dyn)
+
+
+def add_rotary(rnd, w, dyn) -> None:
+    """In about one case in six, a rotary joint (angle limits, an angular spring to 1e3 Hz):
+    drawn from a stream of its own, seeded by the case's stream without advancing it, so every
+    other draw of every case is what it was before the kind existed (the cases the tests name
+    by number are the same worlds)."""
+    state = rnd.getstate()[1]
+    sub = random.Random(f"rotary:{state[0]}:{state[state[-1] % 624]}:{state[-1]}")
+    if not dyn or sub.random() >= 1 / 6:
+        return
+    a = sub.choice(dyn)
+    others = [b for b in dyn if b is not a]
+    b = sub.choice(others) if others and sub.random() < 0.6 else None
+    w.add_joint("rotary", a, b, **joint_params(sub, "rotary", a))
 
 
 def build(rnd) -> Plan:
