@@ -4,7 +4,7 @@ geometry: a kind held at one point (``anchor``) takes the press point; one held 
 (``anchor_a``/``anchor_b``) needs a drag, from body_a to body_b's point (or the background); a
 kind with an axis takes the drag's direction as its axis (a click: its default axis).  Every
 parameter starts at its declared default and is edited in the inspector, which selects the new
-joint.  The dedicated tools (hinge, slider, rope, ...) remain the quick ways to the common kinds."""
+joint (a motor joint's targets: where body_a is now).  The dedicated tools (hinge, slider, rope, ...) remain the quick ways to the common kinds."""
 from __future__ import annotations
 
 import numpy as np
@@ -17,6 +17,17 @@ from .joining import DragJointTool, add_joint
 
 #: the kinds this tool offers: every declared kind but the pointer's own drag
 KINDS = tuple(k for k in jp.KINDS if k != "mouse")
+
+
+def held_pose(a, b) -> dict:
+    """A motor joint's targets that hold ``a`` where it is relative to ``b`` (the world: None):
+    its origin in b's frame and its angle relative to b's.  The declared defaults (a's origin on
+    b's, the same angle) would pull the bodies together the moment the scene plays."""
+    qb = 0.0 if b is None else b.angle
+    d = np.subtract(a.position, (0.0, 0.0) if b is None else b.position)
+    c, s = np.cos(qb), np.sin(qb)
+    return {"linear_offset": (float(c * d[0] + s * d[1]), float(-s * d[0] + c * d[1])),
+            "angular_offset": float(a.angle - qb)}
 
 
 class JointTool(DragJointTool):
@@ -57,6 +68,8 @@ class JointTool(DragJointTool):
         if a.kind == "static" and (b is None or b.kind == "static"):
             self.editor.hint("nothing to join: the bodies here are static (they do not move)")
             return
+        if "linear_offset" in jp.PARAMS[kind]:
+            fields.update(held_pose(a, b))
         add_joint(self.editor, kind, a, b, **fields)
 
     def decorate(self, decor, cursor):

@@ -3,7 +3,8 @@ would: real X events under Xvfb, the kind chosen by its button in the Tools pane
 
 A rotary joint made by a click on a body in the air, given a motor in the inspector, turns the
 body at the motor's speed while the body falls freely (the joint holds the angle and no point:
-its centre falls as g t^2 / 2); a distance joint is dragged from a body to a point above it."""
+its centre falls as g t^2 / 2); a distance joint is dragged from a body to a point above it; a
+motor joint clicked on the bar holds it where it is."""
 from __future__ import annotations
 
 import json
@@ -93,4 +94,20 @@ def test_the_joint_tool_makes_a_rotary_and_a_distance_joint(launch, tmp_path):
     assert (j["kind"], j["a"], j["b"]) == ("distance", names["d"], None), j
     assert j["anchor_b"] == pytest.approx(p1, abs=0.05)
     assert j["params"]["length"] == pytest.approx(3.0, abs=0.05)
+    # a motor joint to the world, clicked on the rotary's bar: it holds the bar where it is (its
+    # targets are the bar's pose now, not the world origin), so the bar stops falling
+    choose_kind(app, "motor")
+    bar = next(b for b in st["bodies"] if b["id"] == names["r"])
+    app.click(*to_screen(st0, bar["position"]))
+    st, j = new_joint(app, 3, "the motor joint")
+    assert (j["kind"], j["a"], j["b"]) == ("motor", names["r"], None), j
+    assert j["params"]["linear_offset"] == pytest.approx(bar["position"], abs=1e-6)
+    app.xdo("mousemove", *map(int, to_screen(st0, (0.0, 7.0))))
+    app.settle()
+    app.key("space")
+    t0 = st["time"]
+    st = app.wait(lambda s: s["time"] > t0 + 1.0, 30, "a second more")
+    held = next(b for b in st["bodies"] if b["id"] == names["r"])["position"]
+    # 100 N against the bar's 6 N weight pulls it back from where it fell meanwhile (< 0.2 m)
+    assert held == pytest.approx(bar["position"], abs=0.2), (held, bar["position"])
     assert st["ui_rects"]["tool:joint"][2] <= W and not st["gl_errors"] and not st["fault"]
