@@ -115,10 +115,14 @@ class ModeValues:
             self.fitted = chosen
             self.version += 1
 
-    def in_force(self) -> dict:
-        """The fitted values in force (name -> (value, why)): those the user did not assign."""
+    def refresh(self) -> None:
+        """Bring ``fitted`` up to date with the world's scene (nothing for a detached copy)."""
         if self.refit is not None:
             self.refit(self)
+
+    def in_force(self) -> dict:
+        """The fitted values in force (name -> (value, why)): those the user did not assign."""
+        self.refresh()
         return {k: vw for k, vw in self.fitted.items() if k not in self.explicit}
 
     def effective(self) -> dict:
@@ -202,7 +206,7 @@ class ModeSettings:
 
     def fitted(self) -> dict:
         """Every value the scene calls for, in force or overridden by the user's (``chosen``)."""
-        self._store.in_force()
+        self._store.refresh()
         return dict(self._store.fitted)
 
     def is_set(self, key) -> bool:
@@ -214,7 +218,7 @@ class ModeSettings:
         """What a scene file keeps: the values that differ from the default, and a value the user
         set over one the scene calls for (a chosen value is chosen again when the file is loaded)."""
         st = self._store
-        st.in_force()
+        st.refresh()
         return {k: st.values[k] for k in self._decl
                 if not _same(st.values[k], self._decl[k].default) or (k in st.explicit and k in st.fitted)}
 

@@ -30,45 +30,49 @@ SUBSTEPS = 8
 
 
 def _extents(world):
-    """(body slot, short side, long side) of each dynamic, non-sensor polygon, circle and capsule
-    fixture, in the body's frame (a polygon's local bounding box, rounding included)."""
+    """(body slot, short side, long side) arrays, one entry per dynamic, non-sensor polygon,
+    circle and capsule fixture in fixture order, in the body's frame (a polygon's local bounding
+    box, rounding included).  numpy over the tables: it runs again after every edit."""
     st = world._store
     f = st.fixtures.arrays
     nf = st.fixtures.n
-    kinds = st.bodies.arrays["kind"][f["body"][:nf]]
-    keep = (kinds == DYNAMIC) & (f["sensor"][:nf] == 0) & np.isin(f["shape"][:nf], (POLYGON, CIRCLE, CAPSULE))
+    body, shape = f["body"][:nf], f["shape"][:nf]
+    keep = (st.bodies.arrays["kind"][body] == DYNAMIC) & (f["sensor"][:nf] == 0) & \
+        np.isin(shape, (POLYGON, CIRCLE, CAPSULE))
     idx = np.nonzero(keep)[0]
-    local = st.verts.arrays["local"]
-    out = []
-    for i in idx:
-        r = f["radius"][i]
-        if f["shape"][i] == CIRCLE:
-            out.append((f["body"][i], 2 * r, 2 * r))
-            continue
-        v = local[f["vstart"][i]: f["vstart"][i] + f["vcount"][i]]
-        w, h = np.ptp(v[:, 0]) + 2 * r, np.ptp(v[:, 1]) + 2 * r
-        out.append((f["body"][i], min(w, h), max(w, h)))
-    return out
+    r2 = 2 * f["radius"][idx]
+    w, h = r2.copy(), r2.copy()  # a circle: its diameter both ways
+    cored = shape[idx] != CIRCLE
+    if cored.any():
+        pi = idx[cored]
+        count = f["vcount"][pi]
+        first = np.cumsum(count) - count
+        k = np.arange(count.sum()) - np.repeat(first, count)
+        v = st.verts.arrays["local"][np.repeat(f["vstart"][pi], count) + k]
+        ptp = np.maximum.reduceat(v, first) - np.minimum.reduceat(v, first)
+        w[cored] = ptp[:, 0] + r2[cored]
+        h[cored] = ptp[:, 1] + r2[cored]
+    return body[idx], np.minimum(w, h), np.maximum(w, h)
 
 
 def fit(world) -> dict:
     """``{"substeps": (8, why)}`` when the scene has a thin or a small dynamic body (module doc)."""
-    if world._store.bodies.n == 0:
+    n = world._store.bodies.n
+    if n == 0:
         return {}
     slop = world.linear_slop
-    ext = _extents(world)
-    thin = [e for e in ext if e[1] < THIN * slop and e[2] >= 10 * THIN * slop]
-    if thin:
-        b, short, _ = min(thin, key=lambda e: e[1])
-        return {"substeps": (SUBSTEPS, f"thin shapes: {_name(world, b)} is {_mm(short)} thick "
+    body, short, long = _extents(world)
+    thin = np.nonzero((short < THIN * slop) & (long >= 10 * THIN * slop))[0]
+    if len(thin):
+        t = thin[np.argmin(short[thin])]  # the thinnest, the first of equals
+        return {"substeps": (SUBSTEPS, f"thin shapes: {_name(world, body[t])} is {_mm(short[t])} thick "
                                        f"(under {THIN:g} linear slops)")}
-    size: dict = {}
-    for b, _, long in ext:
-        size[b] = max(size.get(b, 0.0), long)
-    small = [(s, b) for b, s in size.items() if s < SMALL * slop]
-    if small:
-        s, b = min(small)
-        return {"substeps": (SUBSTEPS, f"small bodies: {_name(world, b)} is {_mm(s)} across "
+    size = np.zeros(n)  # each body's largest shape
+    np.maximum.at(size, body, long)
+    small = np.nonzero((size > 0.0) & (size < SMALL * slop))[0]
+    if len(small):
+        b = small[np.argmin(size[small])]  # the smallest, the lowest slot of equals
+        return {"substeps": (SUBSTEPS, f"small bodies: {_name(world, b)} is {_mm(size[b])} across "
                                        f"(under {SMALL:g} linear slops)")}
     pair = _heavy_on_light(world)
     if pair is not None:
