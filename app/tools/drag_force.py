@@ -6,9 +6,9 @@ turn a strong pull through a pile into deep overlaps that their springs then rel
 explosion (on the default scene, a 100 g drag through the pyramid in penalty mode reached 0.54 m
 of overlap and threw bodies past the world bound; at 10 g it stays at 0.11 m, the overlap of
 pulling one box out of the pile).  The hybrid's penalty contacts are stiffer still: at 10 g the
-same drag through the pyramid threw its top boxes 4-11 m in about half the runs of
-tests/app/test_drag_force.py; at 5 g none in 5.  The soft and sequential impulse modes take
-Box2D's 100 g."""
+same drag through the pyramid could throw its top boxes several metres, at 5 g it does not
+(tests/app/test_drag_force.py drags it so in every mode).  The soft and sequential impulse
+modes take Box2D's 100 g."""
 from __future__ import annotations
 
 import math
