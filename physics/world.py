@@ -332,7 +332,8 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         Raises :class:`SimulationError` (and leaves the world as it was before the
         step) if the step would produce a non-finite value.
         """
-        self._check_editable("step")
+        if self._in_callback:  # (_check_editable, inline: this runs at every step)
+            self._check_editable("step")
         h = self._dt if dt is None else finite_num(dt, "dt", lo=DT_MIN, hi=DT_MAX)
         if not math.isfinite(self._time + h):
             raise ValueError(f"dt: a step of {h!r} s would take world.time ({self._time!r} s) beyond the float range")

@@ -60,6 +60,12 @@ def guard_sums(B, S, n, ns, gx, gy, out):
 
 @kernel(entry=True, runtime=True)
 def motor_power(JF, JI, BF, BI, nj):
+    """``motor_power_of`` over the joint and body tables' flat arrays."""
+    return motor_power_of(joints_view(JF, JI), bodies_view(BF, BI), nj)
+
+
+@kernel
+def motor_power_of(J, B, nj):
     """(P, dragged): P bounds the power (W) the ``nj`` joints' motors can put in at the bodies'
     current velocities, and ``dragged`` says a mouse joint pulls (the user's input, unbounded).
 
@@ -68,7 +74,6 @@ def motor_power(JF, JI, BF, BI, nj):
     most F at the anchors supplies at most F |v_rel|, and the anchors' relative velocity is at
     most |v_b - v_a| + |w_a| |r_a| + |w_b| |r_b| (r: the anchor arms).  A motor used as joint
     friction (speed 0) only takes energy out; the bound still allows it T |w_rel|."""
-    J, B = joints_view(JF, JI), bodies_view(BF, BI)
     p = 0.0
     dragged = False
     for j in range(nj):

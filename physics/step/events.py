@@ -75,7 +75,8 @@ class StepEvents:
         else:
             self.sensors.begin = self.sensors.ends = _NONE
         self.step = world.steps
-        self.cache = {}
+        if self.cache:  # (an empty one stands: a new dict per step costs more than the test)
+            self.cache = {}
         if world._gone_fixtures:  # removed fixtures are named only by the ends of this step
             ends = np.concatenate([self.contacts.ends, self.sensors.ends])
             named = set((ends >> 32).tolist()) | set((ends & LOW).tolist())

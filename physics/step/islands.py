@@ -233,9 +233,14 @@ class Islands:
 
 @kernel(entry=True, runtime=True)
 def joint_links_flat(JF, JI, nj, out):
-    """(a, b, driving) per unbroken joint of the flat joint table, into ``out``: the rows
-    ``update_islands`` reads; returns the row count."""
-    J = joints_view(JF, JI)
+    """``joint_links`` over the joint table's flat arrays."""
+    return joint_links(joints_view(JF, JI), nj, out)
+
+
+@kernel
+def joint_links(J, nj, out):
+    """(a, b, driving) per unbroken joint, into ``out``: the rows ``update_islands`` reads;
+    returns the row count."""
     k = 0
     for j in range(nj):
         if J.flags[j] & BROKEN:

@@ -64,6 +64,9 @@ _NO_LINKS = np.zeros((0, 3), np.int64)
 _ON_DEMAND = [True]
 
 
+_clock = time.perf_counter
+
+
 def compile_on_demand(on: bool) -> bool:
     """Set whether a world compiles its step driver when it first needs it (the default) or steps
     without it until it is compiled; returns the previous setting."""
@@ -211,18 +214,24 @@ class OneCall:
         steps = world.steps
         if steps != self._step:  # the driver counts accepted steps itself
             self.S[S_STEP] = self._step = steps
-        r = s.contacts.adopt_factor(self._h, steps)
+        h = self._h
+        c = s.contacts
+        if c.span_step == steps and c.span == h:  # adopt_factor's usual case, without its call
+            c.span_step = steps + 1
+            r = 1.0
+        else:
+            r = c.adopt_factor(h, steps)
         if r != self._cadopt:
             self.D[D_CADOPT] = self._cadopt = r
-        r = s.joints.adopt_factor(self._h, steps) if s.joints.n else 1.0
+        r = s.joints.adopt_factor(h, steps) if s.joints.n else 1.0
         if r != self._jadopt:
             self.D[D_JADOPT] = self._jadopt = r
-        t0 = time.perf_counter()
+        t0 = _clock()
         code = self._call(self.P)
         while drv.OK < code < drv.NONFINITE:
             self._grow(world, pl, code)
             code = self._call(self.P)
-        elapsed = time.perf_counter() - t0
+        elapsed = _clock() - t0
         if code != drv.OK:
             self._refused(world, pl, code)  # raises
         self._step = steps + 1
@@ -292,12 +301,16 @@ class OneCall:
 
     def _accepted(self, world, pl, dt: float, elapsed: float) -> None:
         S = self.S.tolist()  # the slots read once
-        self._mirror(world, S[S_NC])
-        if world._store.joints.n:
-            after_step(world._store, S[S_BROKEN])
+        s = world._store
+        s.contacts.swap()  # the driver swapped the contact tables' roles: so do the Python handles
+        s.contacts.n = S[S_NC]
+        if s.joints.n:
+            after_step(s, S[S_BROKEN])
         pl.n_awake = S[S_NAWAKE] if world._sleeping else -1
         pl.npairs = S[S_NPAIRS]
-        pl.profile.defer(self.T, elapsed)
+        prof = pl.profile  # (StepProfile.defer, inline)
+        prof._stamps = self.T
+        prof._wall = elapsed
         world._time += dt
         world.steps += 1
         world.fault = None

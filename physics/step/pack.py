@@ -13,7 +13,9 @@ changes and keeps it between steps.
 from __future__ import annotations
 
 from numba import types
+from numba.core import cgutils
 from numba.experimental import structref
+from numba.extending import intrinsic
 
 from .._jit import kernel
 
@@ -75,3 +77,30 @@ def pack_signature(values) -> tuple:
     what ``soft_world_step.overloads`` is keyed by once the driver is compiled for such a pack."""
     from numba import typeof
     return (StepPackType([(name, typeof(v)) for name, v in zip(FIELDS, values)]),)
+
+
+@intrinsic
+def call_with_fields(typingctx, fn, pack):
+    """``fn(*fields)``: the compiled function ``fn`` called with the pack's fields in FIELDS order,
+    as they lie in the pack.  ``P.x`` takes a reference to each array it reads and the caller
+    drops it after the call; numba's pruning pass removes such pairs only within one block, and
+    a call's error check splits the block, so a driver reading fifty arrays from its pack paid
+    for a hundred atomic updates per step.  Here the caller lends the pack's arrays instead: the
+    pack holds them for the whole call (built on numba's documented extension API: a StructRef's
+    payload, a dispatcher's compiled function)."""
+    if not isinstance(pack, StepPackType) or not isinstance(fn, types.Dispatcher):
+        return None
+    fields = dict(pack.field_dict)
+    argtys = tuple(fields[name] for name in FIELDS)
+    fsig = typingctx.resolve_function_type(fn, argtys, {})
+
+    def codegen(context, builder, sig, args):
+        ref = cgutils.create_struct_proxy(pack)(context, builder, value=args[1])
+        payload = pack.get_data_type()
+        ptr = context.nrt.meminfo_data(builder, ref.meminfo)
+        ptr = builder.bitcast(ptr, context.data_model_manager[payload].get_value_type().as_pointer())
+        data = cgutils.create_struct_proxy(payload)(context, builder, ref=ptr)
+        impl = context.get_function(fn, fsig)
+        return impl(builder, [getattr(data, name) for name in FIELDS])
+
+    return fsig.return_type(fn, pack), codegen

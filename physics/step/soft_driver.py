@@ -20,15 +20,16 @@ from ..collision.broadphase.brute import brute_pairs
 from ..collision.broadphase.sweep import sweep_pairs
 from ..collision.broadphase.fixture_filter import filter_pairs
 from ..collision.narrowphase.kernel import collide_with, sort_pairs
-from ..constraints.joints.kinds import kinds_changed
+from ..constraints.joints.kinds import kinds_changed_in
 from ..solvers.soft_step.kernel import soft_step
-from ..store.flat import bodies_view, contacts_view, fixtures_view, springs_view, verts_view
 from ..store.optional import optional_joints, optional_springs
+from ..store.table_type import make_table
 from .clock import cycles
 from .energy_bound import ACTIVE, guard_begin, guard_excess
-from .energy_sums import motor_power
+from .energy_sums import motor_power_of
 from .frame import begin_step, end_step
-from .islands import joint_links_flat, update_islands
+from .islands import joint_links, update_islands
+from .pack import call_with_fields
 
 #: P.S slots: counts (bodies, fixtures, springs, joints), the step number, contact rows, which
 #: contact table and which touching set is current, the last touching count, the broad phase's
@@ -47,11 +48,11 @@ T_SLOTS = 7
 
 
 @kernel
-def _motors(JF, JI, BF, BI, nj):
-    """(power bound, dragged) of the joints' motors (energy_sums.motor_power); none without."""
-    if JF is None:
+def _motors(J, B, nj):
+    """(power bound, dragged) of the joints' motors (energy_sums.motor_power_of); none without."""
+    if J is None:
         return 0.0, np.bool_(False)  # a literal False would compile guard_begin twice
-    return motor_power(JF, JI, BF, BI, nj)
+    return motor_power_of(J, B, nj)
 
 
 @kernel
@@ -66,30 +67,29 @@ def _broad_phase(F, nf, pairs, swept, sweep):
 
 
 @kernel
-def _joints_ready(JF, JI, BF, BI, nj, kinds):
+def _joints_ready(J, B, nj, kinds):
     """False when a joined body changed kind (Python rebuilds the joint system)."""
-    if JF is None:
+    if J is None:
         return True
-    return not kinds_changed(JF, JI, BF, BI, nj, kinds)
+    return not kinds_changed_in(J, B, nj, kinds)
 
 
-@kernel(runtime=True)
-def _scale_joint_impulses(JF, JI, nj, r):
+@kernel
+def _scale_joint_impulses(J, nj, r):
     """JointTable.adopt: the joints' impulses times ``r``."""
-    if JF is None or r == 1.0:
+    if J is None or r == 1.0:
         return
-    J = optional_joints(JF, JI)
     for j in range(nj):
         for k in range(J.impulse.shape[1]):
             J.impulse[j, k] *= r
 
 
-@kernel(runtime=True)
-def _links(JF, JI, nj, out):
-    """The joints' island links (islands.joint_links_flat); no rows without joints."""
-    if JF is None:
-        return out[:0]
-    return out[:joint_links_flat(JF, JI, nj, out)]
+@kernel
+def _links(J, nj, out):
+    """The number of the joints' island links (islands.joint_links) in ``out``; none without."""
+    if J is None:
+        return 0
+    return joint_links(J, nj, out)
 
 
 @kernel
@@ -104,47 +104,57 @@ def _scale_impulses(C, nc, r):
 
 @kernel(entry=True, runtime=True)
 def soft_world_step(P):
-    """One step of the world in ``P`` (see the module doc); returns a code."""
-    S, T, D, G = P.S, P.T, P.D, P.G
+    """One step of the world in ``P`` (see the module doc); returns a code.  The pack lends
+    its arrays to ``_drive`` (pack.call_with_fields), which builds the tables over them without
+    numba's runtime: no reference is counted while stepping."""
+    return call_with_fields(_drive, P)
+
+
+@kernel
+def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, CAF, CAI, CApt, CBF, CBI, CBpt,
+           pairs, exclude, pkeys, porder, mscratch, X, Q, V, W, bad, why, cluster, start, end, EK0, EK1, EB0, EB1,
+           EA0, EA1, parent, min_t, label, links, R, SB, V0, JF, JI, JW, JS, kinds, SS, full, sweep):
+    """The step over the pack's arrays (pack.FIELDS, in order): the stages of the module doc."""
     T[0] = cycles()
-    c = P.ctx[0]
+    c = ctx[0]
     c.step = S[S_STEP]
     c.n = S[S_N]
     c.ns = S[S_NS]
-    c.nj = S[S_NJ]
+    nj = c.nj = S[S_NJ]
     nf = S[S_NF]
-    B = bodies_view(P.BF, P.BI)
-    F = fixtures_view(P.FF, P.FI, P.ghost, P.wghost)
-    Sp = springs_view(P.SF, P.SI)
-    begin_step(P.ctx, B, F, verts_view(P.VF, P.VI), nf, P.X, P.Q, P.V, P.W, Sp, P.start)
-    p_start, dragged = _motors(P.JF, P.JI, P.BF, P.BI, S[S_NJ])
-    guard_begin(G, P.start, D[D_GROWTH], p_start, dragged)
-    if not _joints_ready(P.JF, P.JI, P.BF, P.BI, S[S_NJ], P.kinds):
+    B = make_table("bodies", (BF, BI))
+    F = make_table("fixtures", (FF, FI, ghost, wghost))
+    Vt = make_table("verts", (VF,))
+    Sp = make_table("springs", (SF, SI))
+    J = optional_joints(JF, JI)
+    begin_step(ctx, B, F, Vt, nf, X, Q, V, W, Sp, start)
+    p_start, dragged = _motors(J, B, nj)
+    guard_begin(G, start, D[D_GROWTH], p_start, dragged)
+    if not _joints_ready(J, B, nj, kinds):
         return JOINT_KINDS
     T[1] = cycles()
-    npairs = _broad_phase(F, nf, P.pairs, S[S_SWEEP] != 0, P.sweep)
+    npairs = _broad_phase(F, nf, pairs, S[S_SWEEP] != 0, sweep)
     S[S_NEED] = npairs
     if npairs > S[S_LIMIT]:
         return TOO_MANY_PAIRS
-    if npairs > P.pairs.shape[0]:
+    if npairs > pairs.shape[0]:
         return GROW_PAIRS
-    npairs = filter_pairs(F, P.pairs, npairs, P.exclude)
+    npairs = filter_pairs(F, pairs, npairs, exclude)
     S[S_NPAIRS] = npairs
     S[S_NEED] = npairs
     if S[S_CPAR] == 0:  # this step writes table B, reading last step's rows from A
-        C, Cp = contacts_view(P.CBF, P.CBI, P.CBpt), contacts_view(P.CAF, P.CAI, P.CApt)
+        C, Cp = make_table("contacts", (CBF, CBI, CBpt)), make_table("contacts", (CAF, CAI, CApt))
     else:
-        C, Cp = contacts_view(P.CAF, P.CAI, P.CApt), contacts_view(P.CBF, P.CBI, P.CBpt)
-    spare_keys = P.EK1 if S[S_EPAR] == 0 else P.EK0
-    if npairs > min(C.a.shape[0], P.R.shape[0], spare_keys.shape[0]) or \
-            S[S_NTOUCH] > (P.EA1 if S[S_EPAR] == 0 else P.EA0).shape[0]:
+        C, Cp = make_table("contacts", (CAF, CAI, CApt)), make_table("contacts", (CBF, CBI, CBpt))
+    spare_keys = EK1 if S[S_EPAR] == 0 else EK0
+    if npairs > min(C.a.shape[0], R.shape[0], spare_keys.shape[0]) or \
+            S[S_NTOUCH] > (EA1 if S[S_EPAR] == 0 else EA0).shape[0]:
         return GROW_ROWS
     T[2] = cycles()
     nc = 0  # no pairs, no rows: a lone body or a scattered world skips the narrow phase's call
     if npairs:
-        sort_pairs(F.id, P.pairs, npairs, P.pkeys, P.porder)
-        nc = collide_with(P.ctx, B, F, verts_view(P.VF, P.VI), P.pairs, npairs, C, Cp, S[S_NC], P.full,
-                          P.pkeys, P.porder, P.mscratch)
+        sort_pairs(F.id, pairs, npairs, pkeys, porder)
+        nc = collide_with(ctx, B, F, Vt, pairs, npairs, C, Cp, S[S_NC], full, pkeys, porder, mscratch)
         if nc < 0:
             return NEED_FULL
     # the rows are final: the tables' roles swap (Python mirrors it: ContactBuffer.swap)
@@ -153,34 +163,31 @@ def soft_world_step(P):
     c.nc = nc
     T[3] = cycles()
     _scale_impulses(C, nc, D[D_CADOPT])
-    _scale_joint_impulses(P.JF, P.JI, S[S_NJ], D[D_JADOPT])
-    S[S_BROKEN] = soft_step(P.ctx, P.par, B, C, optional_springs(P.SS, P.SI), P.R, P.SB,
-                            optional_joints(P.JF, P.JI), P.JW, P.JS, P.V0)
+    _scale_joint_impulses(J, nj, D[D_JADOPT])
+    S[S_BROKEN] = soft_step(ctx, par, B, C, optional_springs(SS, SI), R, SB, J, JW, JS, V0)
     T[4] = cycles()
     if S[S_SLEEP]:
-        links = _links(P.JF, P.JI, S[S_NJ], P.links)
-        S[S_NAWAKE] = update_islands(P.ctx, B, C, Sp, links, P.parent, P.min_t, P.label)
+        S[S_NAWAKE] = update_islands(ctx, B, C, Sp, links[:_links(J, nj, links)], parent, min_t, label)
     T[5] = cycles()
-    return _finish(P, B, Sp, C, nc)
-
-
-@kernel(runtime=True)
-def _finish(P, B, Sp, C, nc):
-    """The finite check, the energy guard and the touching merge (frame.end_step)."""
-    S, T, D, G = P.S, P.T, P.D, P.G
-    c = P.ctx[0]
     if S[S_EPAR] == 0:
-        keys, out, begin, absent = P.EK0, P.EK1, P.EB1, P.EA1
+        keys, out, begin, absent = EK0, EK1, EB1, EA1
     else:
-        keys, out, begin, absent = P.EK1, P.EK0, P.EB0, P.EA0
-    k, nt, nb, na = end_step(P.ctx, B, Sp, P.bad, P.why, C.a, C.b, nc, P.cluster, P.end, C.key, C.count, C.depth,
-                             C.jn, keys, S[S_NTOUCH], out, begin, absent)
+        keys, out, begin, absent = EK1, EK0, EB0, EA0
+    k, nt, nb, na = end_step(ctx, B, Sp, bad, why, C.a, C.b, nc, cluster, end, C.key, C.count, C.depth, C.jn,
+                             keys, S[S_NTOUCH], out, begin, absent)
+    return _finish(S, T, D, G, c, J, B, nj, end, k, nt, nb, na)
+
+
+@kernel
+def _finish(S, T, D, G, c, J, B, nj, end, k, nt, nb, na):
+    """After end_step: the non-finite count ``k``, the energy guard, then the touching merge's
+    counts (``nt``, ``nb``, ``na``) kept for Python."""
     S[S_KBAD] = k
     if k:
         return NONFINITE
     if G[ACTIVE] != 0.0:
-        p_end = _motors(P.JF, P.JI, P.BF, P.BI, S[S_NJ])[0]
-        if guard_excess(G, P.end, D[D_GROWTH], c.dt, D[D_GMAG], c.slop, p_end):
+        p_end = _motors(J, B, nj)[0]
+        if guard_excess(G, end, D[D_GROWTH], c.dt, D[D_GMAG], c.slop, p_end):
             return GAINED
     S[S_NT] = nt
     S[S_NB] = nb

@@ -12,30 +12,36 @@ from __future__ import annotations
 from numba import types
 from numba.extending import overload
 
-from .flat import joints_view, springs_view
+from .table_type import make_table
 
 
 def optional_joints(JF, JI):
     """The joints' view of ``(JF, JI)``, or None for a world without joints (``JF`` None)."""
-    return None if JF is None else joints_view(JF, JI)
+    return None if JF is None else make_table("joints", (JF, JI))
 
 
 def optional_springs(SF, SI):
     """The springs' view of ``(SF, SI)``, or None for a world without springs (``SF`` None): the
     spring solve (constraints/springs: the implicit system and its Newton refinement, some 30
     kernels and about 7 CPU s of a cold first step) is then not compiled."""
-    return None if SF is None else springs_view(SF, SI)
+    return None if SF is None else make_table("springs", (SF, SI))
 
 
-def _view_or_none(view):
-    """The typing of an optional table: None for a None-typed first array, else ``view``."""
-    def typing(F, I):
-        if isinstance(F, types.NoneType):
-            return lambda F, I: None
-        return lambda F, I: view(F, I)
-    return typing
+def _joints_or_none(F, I):
+    """The typing of optional_joints: None for a None-typed first array, else the table."""
+    if isinstance(F, types.NoneType):
+        return lambda F, I: None
+    return lambda F, I: make_table("joints", (F, I))
 
 
-# inline: each returns arrays, so it is built the caller's way (with or without numba's runtime)
-overload(optional_joints, inline="always")(_view_or_none(joints_view))
-overload(optional_springs, inline="always")(_view_or_none(springs_view))
+def _springs_or_none(F, I):
+    """The typing of optional_springs, likewise."""
+    if isinstance(F, types.NoneType):
+        return lambda F, I: None
+    return lambda F, I: make_table("springs", (F, I))
+
+
+# inline, and the table made in place (an intrinsic, not a kernel): it is built the caller's way,
+# with or without numba's runtime, so a runtime-free caller counts no references
+overload(optional_joints, inline="always")(_joints_or_none)
+overload(optional_springs, inline="always")(_springs_or_none)
