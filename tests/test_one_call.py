@@ -198,3 +198,47 @@ def test_a_world_waits_for_its_driver_without_compile_on_demand(monkeypatch):
         one_call.compile_on_demand(was)
     b = _run(SCENES["chain10"], False, 120)
     _same(a, b)
+
+
+def test_the_pack_lends_its_fields_to_the_driver_in_order():
+    """pack.call_with_fields passes the pack's fields by position: _drive's parameters must be
+    pack.FIELDS in order, or two arrays of one type (the touching sets' spares, the contact
+    tables) would silently trade places."""
+    import inspect
+
+    from physics.step.pack import FIELDS
+    from physics.step.soft_driver import _drive
+
+    assert tuple(inspect.signature(_drive.py_func).parameters) == FIELDS
+
+
+def test_stepping_through_the_driver_keeps_no_reference():
+    """The driver borrows the pack's arrays (no reference counting while stepping).  None is
+    released early: after many steps each array the store holds has the Python references it
+    had before.  None is kept: once the world is gone, only this test refers to them.  A
+    pendulum and a pile cover the joint and contact arrays."""
+    import gc
+    import sys
+
+    for make in (SCENES["pendulum"], _pile):
+        w = make()
+        w.step()
+        assert w._pipeline.one_call.P is not None
+        s = w._store
+
+        def held():  # the arrays the store holds now (a grown table replaces its arrays)
+            return {id(a): a for a in (*s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.contacts.cur_cols.flat,
+                                       *s.contacts.prev_cols.flat, *(s.joints.arrays.flat if s.joints.n else ()))}
+
+        for _ in range(30):  # past the steps that grow the pile's pair and contact arrays
+            w.step()
+        before = {k: sys.getrefcount(a) for k, a in held().items()}
+        for _ in range(50):
+            w.step()
+        after = {k: sys.getrefcount(a) for k, a in held().items()}
+        assert after.keys() == before.keys() and len(after) >= 10
+        assert after == before
+        arrays = list(held().values())
+        del w, s
+        gc.collect()
+        assert [sys.getrefcount(a) - 2 for a in arrays] == [1] * len(arrays)  # (the list's own)

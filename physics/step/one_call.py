@@ -81,6 +81,7 @@ class OneCall:
     def __init__(self):
         self.P = None
         self.key = None
+        self._par = None  # the mode's parameters the key was made with (Pipeline.params)
         self.enabled = True  # False: every step goes through the pipeline's stages (tests compare)
         self.S, self.D, self.T = drv.empty_state()
         self._keys = ()  # the touching sets' arrays in the pack (to notice a replaced one)
@@ -105,12 +106,15 @@ class OneCall:
                 and broadphase.resolve(world.broadphase, world._store.fixtures.n) in _BROAD)
 
     @staticmethod
-    def _key(world, pl, par) -> tuple:
-        """What the pack and the choice of path depend on: every attribute read directly, since
-        this runs once per step (store/table.py: GENERATION counts replaced table arrays).  The
-        second entry counts the pipeline's steps (a world waiting for its driver makes them)."""
+    def _key(world, pl) -> tuple:
+        """What the pack, the mode's parameters and the choice of path depend on: every attribute
+        read directly, since this runs once per step (store/table.py: GENERATION counts replaced
+        table arrays; the third entry the version of the mode's settings, -1 before they exist).
+        The second entry counts the pipeline's steps (a world waiting for its driver makes them)."""
         s = world._store
-        return (pl.edits, pl.python_steps, par.version, id(world._mode), GENERATION[0], s.joints.version,
+        mode = world._mode
+        vals = world._settings.get(mode.name)
+        return (pl.edits, pl.python_steps, -1 if vals is None else vals.version, mode, GENERATION[0], s.joints.version,
                 s.contacts.full, world._max_pairs, world._pair_filter is None, world._n_sensors,
                 pl.events.sensors.active, world._broadphase)
 
@@ -197,9 +201,12 @@ class OneCall:
         as much as the rest of a one-body step's Python)."""
         if not self.enabled:
             return False
-        par = pl.params(world)
-        key = self._key(world, pl, par)
-        if key != self.key:
+        key = self._key(world, pl)
+        if key == self.key:
+            par = self._par  # nothing it depends on changed (Pipeline.params would return it as is)
+        else:
+            self._par = par = pl.params(world)
+            key = self._key(world, pl)  # (params may have fitted the settings to the scene anew)
             if self._waiting is None or key[0] != self.key[0] or key[2:] != self.key[2:]:
                 self.P = self._waiting = None
                 if self.usable(world, pl, par):
@@ -283,17 +290,11 @@ class OneCall:
         elif code == drv.JOINT_KINDS:
             joint_work(s)._key = None  # the system is rebuilt for the bodies' new kinds
         self.build(world, pl, now=True)
-        self.key = self._key(world, pl, pl.params(world))
-
-    @staticmethod
-    def _mirror(world, nc: int) -> None:
-        """The contact tables swapped inside the driver: so do the Python handles (``nc`` rows)."""
-        c = world._store.contacts
-        c.swap()
-        c.n = nc
+        self._par = pl.params(world)
+        self.key = self._key(world, pl)
 
     def _refused(self, world, pl, code: int) -> None:
-        self._mirror(world, int(self.S[S_NC]))
+        world._store.contacts.swap(int(self.S[S_NC]))  # the driver swapped the tables: so do the handles
         if code == drv.NONFINITE:
             pl._fail(world, pl._checkpoint.slots(int(self.S[S_KBAD])))
         g = pl._guard
@@ -301,16 +302,12 @@ class OneCall:
 
     def _accepted(self, world, pl, dt: float, elapsed: float) -> None:
         S = self.S.tolist()  # the slots read once
-        s = world._store
-        s.contacts.swap()  # the driver swapped the contact tables' roles: so do the Python handles
-        s.contacts.n = S[S_NC]
-        if s.joints.n:
-            after_step(s, S[S_BROKEN])
+        world._store.contacts.swap(S[S_NC])  # the driver swapped the tables: so do the handles
+        if world._store.joints.n:
+            after_step(world._store, S[S_BROKEN])
         pl.n_awake = S[S_NAWAKE] if world._sleeping else -1
         pl.npairs = S[S_NPAIRS]
-        prof = pl.profile  # (StepProfile.defer, inline)
-        prof._stamps = self.T
-        prof._wall = elapsed
+        pl.profile.defer(self.T, elapsed)
         world._time += dt
         world.steps += 1
         world.fault = None

@@ -35,9 +35,16 @@ class SensorTracker:
         return self.pairs
 
     @property
-    def active(self) -> bool:
-        """Overlaps are open (they must end even once the last sensor is gone)."""
-        return len(self.keys) > 0
+    def keys(self) -> np.ndarray:
+        """The overlapping keys, sorted.  Setting them sets ``active``: whether overlaps are open
+        (they must end even once the last sensor is gone), a plain attribute because the step
+        asks it every time."""
+        return self._keys
+
+    @keys.setter
+    def keys(self, keys) -> None:
+        self._keys = keys
+        self.active = len(keys) > 0
 
     def sense(self, ctx, store, ns: int) -> None:
         """The overlapping keys of the first ``ns`` sensor pairs (committed at the step's end)."""

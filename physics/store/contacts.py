@@ -102,11 +102,12 @@ class ContactBuffer:
         self.cur = Contacts(**self.cur_cols)
         self.prev = Contacts(**self.prev_cols)
 
-    def swap(self) -> None:
-        """Make the current table the previous one before a new narrow phase."""
+    def swap(self, n: int = 0) -> None:
+        """Make the current table the previous one before a new narrow phase (or, with ``n``,
+        after the step driver's: the new current table holds ``n`` rows)."""
         self.cur, self.prev = self.prev, self.cur
         self.cur_cols, self.prev_cols = self.prev_cols, self.cur_cols
-        self.n_prev, self.n = self.n, 0
+        self.n_prev, self.n = self.n, n
 
     def adopt(self, span: float, step: int) -> None:
         """Make the current impulses mean impulse over ``span`` seconds for the solve of ``step``.
