@@ -13,30 +13,33 @@ than its size, while trees create none.
 from __future__ import annotations
 
 import heapq
-from collections import namedtuple
 
 import numpy as np
 
 from ....store import DYNAMIC
+from ....store.segments import FLOAT, INT, segments_class
 from ..prepare import equality_counts
 from . import ldl
 
 FILL_BUDGET = 6  # fill-in (matrix entries) allowed per joint of a component, plus FILL_SLACK
 FILL_SLACK = 64
 
-JointSystem = namedtuple("JointSystem", "dims row_j row_r jrow Ap Ai Ax contrib Parent Lnz Lp Li Lx invD Y "
-                                        "Pattern Flag x skip")
+#: the system's arrays (store/segments.py: two buffers, so a kernel call passes two arrays, not 19):
+#: integers or floats, and a row width for the 2-D contributions
+JointSystem = segments_class("JointSystem", {
+    "dims": (INT, 0), "row_j": (INT, 0), "row_r": (INT, 0), "jrow": (INT, 0), "Ap": (INT, 0), "Ai": (INT, 0),
+    "Ax": (FLOAT, 0), "contrib": (INT, 8), "Parent": (INT, 0), "Lnz": (INT, 0), "Lp": (INT, 0), "Li": (INT, 0),
+    "Lx": (FLOAT, 0), "invD": (FLOAT, 0), "Y": (FLOAT, 0), "Pattern": (INT, 0), "Flag": (INT, 0), "x": (FLOAT, 0),
+    "skip": (INT, 0)}, "joint_system")
 
 
 def _system(nrows, nnz, ncontrib, nnzl, jcap):
-    i4 = np.int64
-    return JointSystem(dims=np.array([nrows, ncontrib, nnz, nnzl], i4), row_j=np.zeros(nrows, i4),
-                       row_r=np.zeros(nrows, i4), jrow=np.full(jcap, -1, i4), Ap=np.zeros(nrows + 1, i4),
-                       Ai=np.zeros(nnz, i4), Ax=np.zeros(nnz), contrib=np.zeros((ncontrib, 8), i4),
-                       Parent=np.zeros(nrows, i4), Lnz=np.zeros(nrows, i4), Lp=np.zeros(nrows + 1, i4),
-                       Li=np.zeros(nnzl, i4), Lx=np.zeros(nnzl), invD=np.zeros(nrows), Y=np.zeros(nrows),
-                       Pattern=np.zeros(nrows, i4), Flag=np.zeros(nrows, i4), x=np.zeros(nrows),
-                       skip=np.zeros(nrows, np.bool_))
+    r = nrows
+    sys = JointSystem(dims=4, row_j=r, row_r=r, jrow=jcap, Ap=r + 1, Ai=nnz, Ax=nnz, contrib=ncontrib, Parent=r,
+                      Lnz=r, Lp=r + 1, Li=max(nnzl, 1), Lx=max(nnzl, 1), invD=r, Y=r, Pattern=r, Flag=r, x=r, skip=r)
+    sys.dims[:] = (nrows, ncontrib, nnz, nnzl)
+    sys.jrow[:] = -1
+    return sys
 
 
 def empty_system(jcap: int) -> JointSystem:
@@ -206,5 +209,7 @@ def _numbering(J, order, m, moving, jcap):
     sys.contrib[:, 1:] = rows
     ldl.symbolic(nrows, sys.Ap, sys.Ai, sys.Parent, sys.Lnz, sys.Flag, sys.Lp)
     nnzl = int(sys.Lp[nrows])
-    return sys._replace(Li=np.zeros(max(nnzl, 1), np.int64), Lx=np.zeros(max(nnzl, 1)),
-                        dims=np.array([nrows, len(rows), len(keys), nnzl], np.int64))
+    out = _system(nrows, len(keys), len(rows), nnzl, jcap)  # the same, with room for L's entries
+    for name in ("jrow", "row_j", "row_r", "Ai", "Ap", "contrib", "Parent", "Lnz", "Flag", "Lp"):
+        getattr(out, name)[...] = getattr(sys, name)
+    return out
