@@ -6,7 +6,8 @@ in its module (``prepare_<kind>``, ``rows_<kind>``).
 - ``solve_joints(use_bias)``: the spring, motor and limit rows (and the motor and
   mouse joints) in sequence, then the equality rows: each joint's block in
   sequence (Box2D v3) or, with ``eq_global``, all of them together
-  (system/solve.py) except those of structures the system left sequential;
+  (system/solve.py) except those of structures the system left sequential, and
+  a structure of one joint as its own block (system/block.py, the system's numbers);
   without bias it is the relax pass;
 - ``store_joints``: reaction force and torque of the last pass into the table,
   and breaking (returns how many joints broke).
@@ -28,7 +29,8 @@ from .prismatic import prepare_prismatic, rows_prismatic
 from .revolute import prepare_revolute, rows_revolute
 from .rotary import ROTARY, prepare_rotary, rows_rotary
 from .rows import solve_equality, solve_free_rows, warm_start_rows
-from .system.solve import solve_system
+from .system.block import BLOCK, SEQUENTIAL, correct_block, solve_block
+from .system.solve import correct_system, solve_system
 from .weld import prepare_weld, rows_weld
 from .wheel import prepare_wheel, rows_wheel
 
@@ -123,10 +125,26 @@ def solve_joints(c, B, J, JW, JS, use_bias, inv_h, eq_global):
         mask = JW.mask[j]
         solve_free_rows(J, JW, j, a, b, mask, use_bias, inv_h)
         m = equality_rows_of(mask)
-        if m > 0 and (not eq_global or JW.seq[j]):
+        if m > 0 and (not eq_global or JW.seq[j] == SEQUENTIAL):
             solve_equality(J, JW, j, a, b, m, use_bias)
-    if eq_global and JS.dims[0] > 0:
-        solve_system(J, JW, JS, use_bias)
+    if eq_global:
+        for j in range(c.nj):  # the structures of one joint, where the system is solved
+            if JW.on[j] and JW.seq[j] == BLOCK:
+                solve_block(J, JW, j, JW.ab[j, 0], JW.ab[j, 1], equality_rows_of(JW.mask[j]), use_bias)
+        if JS.dims[0] > 0:
+            solve_system(J, JW, JS, use_bias)
+
+
+@row_kernel
+def project_joints(c, B, J, JW, JS):
+    """One Newton step on the positions of the globally solved structures (the system's and the
+    lone joints' blocks), at the rows where the bodies are now."""
+    refresh_rows(c, B, J, JW)
+    for j in range(c.nj):
+        if JW.on[j] and JW.seq[j] == BLOCK:
+            correct_block(B, JW, j, JW.ab[j, 0], JW.ab[j, 1], equality_rows_of(JW.mask[j]))
+    if JS.dims[0] > 0:
+        correct_system(B, JW, JS, 1.0)
 
 
 @row_kernel

@@ -20,6 +20,7 @@ from .layout import CC, MASS, SOFT_EQ
 from .rows import block_entry, solve_sym
 from .shift import capped_error, shift_row
 from .sync import displacement_from_table
+from .system.block import BLOCK, SEQUENTIAL, correct_block
 from .system.solve import correct_system
 
 
@@ -76,11 +77,15 @@ def correct_joint_positions(c, B, J, JW, JS, eq_global, beta, iterations):
             joint_rows(B, J, JW, j, a, b)
             mask = JW.mask[j]
             m = equality_rows_of(mask)
-            if m > 0 and (not eq_global or JW.seq[j]):
+            if m > 0 and (not eq_global or JW.seq[j] == SEQUENTIAL):
                 correct_equality(B, J, JW, j, a, b, m, beta)
             if mask & (1 << LOWER):
                 correct_limit(B, JW, a, b, j, np.int64(LOWER), beta)
             if mask & (1 << UPPER):
                 correct_limit(B, JW, a, b, j, np.int64(UPPER), beta)
-        if eq_global and JS.dims[0] > 0:
-            correct_system(B, JW, JS, 1.0)
+        if eq_global:
+            for j in range(c.nj):  # the structures of one joint, where the system is corrected
+                if JW.on[j] and JW.seq[j] == BLOCK:
+                    correct_block(B, JW, j, JW.ab[j, 0], JW.ab[j, 1], equality_rows_of(JW.mask[j]))
+            if JS.dims[0] > 0:
+                correct_system(B, JW, JS, 1.0)

@@ -19,12 +19,12 @@ from ...constraints.contact_coloured import RELAX, SOLVE, WARM, coloured_pass
 from ...constraints.contact_restitution import restitution_contacts
 from ...constraints.contact_soft import prepare_contacts, store_impulses
 from ...constraints.contact_wide import pack, repack_normal, unpack
-from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
+from ...constraints.joints.dispatch import (project_joints, refresh_rows, solve_joints, store_joints,
+                                                warm_start_joints)
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
 from ...constraints.joints.pivot import save_pivots
 from ...constraints.rotation_cap import PIVOT_COLUMNS
 from ...constraints.joints.sync import save_start
-from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
 from ...constraints.restitution_cluster import save_velocities
 from ...constraints.springs.substep import solve_springs
@@ -59,7 +59,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
         prepare_joints(c, B, J, JW, h, p.soft_joint[0], p.soft_joint[1], p.soft_joint[2])
         save_start(B, n, JW.X0, JW.Q0)
     eq_global = p.joint_solver == GLOBAL
-    project = J is not None and eq_global and p.joint_projection and JS.dims[0] > 0
+    project = J is not None and eq_global and p.joint_projection
     bouncy = False
     for k in range(c.nc):
         if C.e[k] != 0.0:
@@ -87,8 +87,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             load_velocities(B, n, SB)
         integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0))
         if project:
-            refresh_rows(c, B, J, JW)
-            correct_system(B, JW, JS, 1.0)
+            project_joints(c, B, J, JW, JS)
         if p.relax:
             coloured_pass(relax, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:

@@ -40,12 +40,12 @@ from ...constraints.body_rows import (gather_bodies, integrate_row_positions, in
                                       load_velocities, store_velocities)
 from ...constraints.contact_restitution import restitution_contacts
 from ...constraints.contact_soft import prepare_contacts, solve_contacts, store_impulses, warm_start_contacts
-from ...constraints.joints.dispatch import refresh_rows, solve_joints, store_joints, warm_start_joints
+from ...constraints.joints.dispatch import (project_joints, refresh_rows, solve_joints, store_joints,
+                                                warm_start_joints)
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
 from ...constraints.joints.pivot import save_pivots
 from ...constraints.rotation_cap import PIVOT_COLUMNS
 from ...constraints.joints.sync import save_start
-from ...constraints.joints.system.solve import correct_system
 from ...constraints.point import zero_impulses
 from ...constraints.restitution_cluster import save_velocities
 from ...constraints.springs.substep import solve_springs
@@ -80,7 +80,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
         save_start(B, n, JW.X0, JW.Q0)
         save_pivots(c, B, J, JW, V0)
     eq_global = p.joint_solver == GLOBAL
-    project = J is not None and eq_global and p.joint_projection and JS.dims[0] > 0
+    project = J is not None and eq_global and p.joint_projection
     iterations = p.iterations
     touching = c.nc > 0  # a lone or scattered body: no contact verb is called
     bouncy = False  # any restitution: the sub-step's start velocities cap the bounces
@@ -107,8 +107,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             load_velocities(B, n, SB)
         integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0))
         if project:
-            refresh_rows(c, B, J, JW)
-            correct_system(B, JW, JS, 1.0)
+            project_joints(c, B, J, JW, JS)
         if p.relax:
             if touching:
                 solve_contacts(c, p, SB, C, R, no, yes)

@@ -17,14 +17,14 @@ from __future__ import annotations
 import numpy as np
 
 from ...body_rows import II, IM
-from ..jit import row_kernel
+from ..jit import row_inline, row_kernel
 from ..layout import CC, KA, KB, NX, NY, SOFT_EQ
 from ..rows import apply_row, row_speed
 from ..shift import capped_error, shift_row
 from . import ldl
 
 
-@row_kernel
+@row_inline
 def mark_skips(JW, JS, positions):
     """Which rows sit out this pass; True if any row takes part."""
     active = False
@@ -38,7 +38,7 @@ def mark_skips(JW, JS, positions):
     return active
 
 
-@row_kernel
+@row_inline
 def assemble(JW, JS):
     """Ax from the rows' Jacobians; skipped rows become identity rows."""
     G = JW.G
@@ -66,7 +66,7 @@ def assemble(JW, JS):
             Ax[JS.Ap[i + 1] - 1] = 1.0  # the diagonal is the last entry of its column
 
 
-@row_kernel
+@row_inline
 def factor_and_solve(JS):
     nr = JS.dims[0]
     ldl.numeric(nr, JS.Ap, JS.Ai, JS.Ax, JS.Lp, JS.Parent, JS.Lnz, JS.Li, JS.Lx, JS.invD, JS.Y, JS.Pattern,

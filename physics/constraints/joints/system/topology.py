@@ -20,9 +20,11 @@ from ....store import DYNAMIC
 from ....store.segments import FLOAT, INT, segments_class
 from ..prepare import equality_counts
 from . import ldl
+from .block import BLOCK, SEQUENTIAL
 
 FILL_BUDGET = 6  # fill-in (matrix entries) allowed per joint of a component, plus FILL_SLACK
 FILL_SLACK = 64
+LONE_AS_BLOCK = [True]  # (False: lone joints go into the system; tests compare the two)
 
 #: the system's arrays (store/segments.py: two buffers, so a kernel call passes two arrays, not 19):
 #: integers or floats, and a row width for the 2-D contributions
@@ -126,7 +128,8 @@ def minimum_degree(joints, adj, budget):
 
 
 def build(J, nj: int, kinds: np.ndarray, jcap: int):
-    """(JointSystem, seq): the global system for the joints, and which joints stay sequential."""
+    """(JointSystem, seq): the global system for the joints, and which joints stay out of it
+    (SEQUENTIAL, BLOCK)."""
     m = np.zeros(max(nj, 1), np.int64)
     if nj:
         equality_counts(J, nj, m)
@@ -134,10 +137,13 @@ def build(J, nj: int, kinds: np.ndarray, jcap: int):
     moving = _moving_bodies(J, nj, kinds, m)
     rows, order = [], []
     for comp in _components(moving):
+        if len(comp) == 1 and LONE_AS_BLOCK[0]:
+            seq[comp] = BLOCK
+            continue
         adj = _adjacency(comp, moving)
         elim = minimum_degree(comp, adj, FILL_BUDGET * len(comp) + FILL_SLACK) if len(comp) > 1 else comp
         if elim is None:
-            seq[comp] = 1
+            seq[comp] = SEQUENTIAL
             continue
         order += elim
     system = _numbering(J, order, m, moving, jcap)
