@@ -13,9 +13,11 @@ moving body; a tree of joints (chains, ragdolls, cantilevers, cars) then
 factorises without fill in linear time, as Baraff's method does ("Linear-time
 dynamics using Lagrange multipliers", SIGGRAPH 1996), and a few loops (a
 walker's linkage) cost a little fill.  A structure whose factor would fill
-beyond a budget (a cloth-like grid) keeps the sequential rows.
+beyond a budget (a cloth-like grid) keeps the sequential rows; a structure of
+one joint is solved as its own dense block, with the system's arithmetic.
 
 - ``topology``: which rows, their order, the pattern, the symbolic factor (Python, on change);
 - ``ldl``: the numeric factorisation and solve (kernels);
-- ``solve``: assembly from the joints' rows and the velocity and position passes.
+- ``solve``: assembly from the joints' rows and the velocity and position passes;
+- ``block``: the passes for a structure of one joint.
 """
