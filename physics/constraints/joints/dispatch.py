@@ -93,9 +93,12 @@ def refresh_rows(c, B, J, JW):
 
 
 @row_kernel
-def warm_start_joints(c, B, J, JW):
-    """The rows at the current positions, then every row's accumulated impulse applied again."""
-    refresh_rows(c, B, J, JW)
+def warm_start_joints(c, B, J, JW, refresh):
+    """The rows at the current positions (unless ``refresh`` is False: the caller's last
+    ``refresh_rows`` came after the last move), then every row's accumulated impulse applied
+    again."""
+    if refresh:
+        refresh_rows(c, B, J, JW)
     for j in range(c.nj):
         if JW.on[j]:
             warm_start_rows(J, JW, j, JW.ab[j, 0], JW.ab[j, 1])

@@ -76,7 +76,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             save_velocities(SB, n, V0)
         coloured_pass(warm, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
         if J is not None:
-            warm_start_joints(c, B, J, JW)
+            warm_start_joints(c, B, J, JW, np.bool_(True))
         for it in range(p.iterations):
             coloured_pass(solve, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:

@@ -88,6 +88,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
         if C.e[k] != 0.0:
             bouncy = True
             break
+    fresh = no  # the joints' rows are those of the bodies' current positions (dispatch.refresh_rows)
     for _ in range(p.substeps):
         integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
         if bouncy:
@@ -95,7 +96,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
         if touching:
             warm_start_contacts(c, SB, C, R)
         if J is not None:
-            warm_start_joints(c, B, J, JW)
+            warm_start_joints(c, B, J, JW, not fresh)
         for it in range(iterations):
             if touching:
                 solve_contacts(c, p, SB, C, R, yes, yes)
@@ -106,6 +107,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
         integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0))
+        fresh = no
         if project:
             project_joints(c, B, J, JW, JS)
         if p.relax:
@@ -114,6 +116,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             if J is not None:
                 refresh_rows(c, B, J, JW)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, no, p.inv_h, eq_global)
+                fresh = yes  # nothing moves them before the next sub-step's warm start
         if bouncy:
             restitution_contacts(c, p, SB, C, R, V0)  # in the sub-step of first touch
     store_impulses(c, C, R)
