@@ -28,12 +28,13 @@ from . import ldl
 def mark_skips(JW, JS, positions):
     """Which rows sit out this pass; True if any row takes part."""
     active = False
+    row_j, row_r, skips = JS.row_j, JS.row_r, JS.skip  # (each field's view made once: store/segments.py)
     for i in range(JS.dims[0]):
-        j = JS.row_j[i]
+        j = row_j[i]
         skip = JW.on[j] == 0
-        if not skip and positions and JW.F[j, SOFT_EQ + 6 * JS.row_r[i] + 5] > 0.0:
+        if not skip and positions and JW.F[j, SOFT_EQ + 6 * row_r[i] + 5] > 0.0:
             skip = True  # a spring row is not projected onto its rest position
-        JS.skip[i] = skip
+        skips[i] = skip
         active |= not skip
     return active
 
@@ -47,12 +48,13 @@ def assemble(JW, JS):
     for e in range(JS.dims[2]):
         Ax[e] = 0.0
     Q = JS.contrib
+    skip, jrow, Ap = JS.skip, JS.jrow, JS.Ap
     for q in range(JS.dims[1]):
         j = Q[q, 2]
         r = Q[q, 3]
         k = Q[q, 5]
         s = Q[q, 6]
-        if JS.skip[JS.jrow[j] + r] or JS.skip[JS.jrow[k] + s]:
+        if skip[jrow[j] + r] or skip[jrow[k] + s]:
             continue
         c = Q[q, 1]
         sj = Q[q, 4]
@@ -62,8 +64,8 @@ def assemble(JW, JS):
         Ax[Q[q, 0]] += sj * sk * (SB[c, IM] * (G[j, r, NX] * G[k, s, NX] + G[j, r, NY] * G[k, s, NY])
                                   + SB[c, II] * kj * kk)
     for i in range(JS.dims[0]):
-        if JS.skip[i]:
-            Ax[JS.Ap[i + 1] - 1] = 1.0  # the diagonal is the last entry of its column
+        if skip[i]:
+            Ax[Ap[i + 1] - 1] = 1.0  # the diagonal is the last entry of its column
 
 
 @row_inline
@@ -82,29 +84,30 @@ def solve_system(J, JW, JS, use_bias):
     assemble(JW, JS)
     G = JW.G
     F = JW.F
+    skip, row_j, row_r, x, Ap, Ax = JS.skip, JS.row_j, JS.row_r, JS.x, JS.Ap, JS.Ax
     for i in range(JS.dims[0]):
-        if JS.skip[i]:
-            JS.x[i] = 0.0
+        if skip[i]:
+            x[i] = 0.0
             continue
-        j = JS.row_j[i]
-        r = JS.row_r[i]
+        j = row_j[i]
+        r = row_r[i]
         o = SOFT_EQ + 6 * r
         g = row_speed(JW, JW.ab[j, 0], JW.ab[j, 1], j, r)
         if F[j, o + 5] > 0.0:
-            d = JS.Ap[i + 1] - 1
-            gam = JS.Ax[d] * F[j, o + 5] / F[j, o + 4]
-            JS.Ax[d] += gam
-            JS.x[i] = -(g + F[j, o + 3] * G[j, r, CC] + gam * J.impulse[j, r])
+            d = Ap[i + 1] - 1
+            gam = Ax[d] * F[j, o + 5] / F[j, o + 4]
+            Ax[d] += gam
+            x[i] = -(g + F[j, o + 3] * G[j, r, CC] + gam * J.impulse[j, r])
         elif use_bias:
-            JS.x[i] = -(g + F[j, o] * G[j, r, CC])
+            x[i] = -(g + F[j, o] * G[j, r, CC])
         else:
-            JS.x[i] = -g
+            x[i] = -g
     factor_and_solve(JS)
     for i in range(JS.dims[0]):
-        if not JS.skip[i]:
-            j = JS.row_j[i]
-            r = JS.row_r[i]
-            lam = JS.x[i]
+        if not skip[i]:
+            j = row_j[i]
+            r = row_r[i]
+            lam = x[i]
             J.impulse[j, r] += lam
             apply_row(JW, JW.ab[j, 0], JW.ab[j, 1], j, r, lam)
 
@@ -116,15 +119,16 @@ def correct_system(B, JW, JS, beta):
         return
     assemble(JW, JS)
     G = JW.G
+    skip, row_j, row_r, x = JS.skip, JS.row_j, JS.row_r, JS.x
     for i in range(JS.dims[0]):
-        if JS.skip[i]:
-            JS.x[i] = 0.0
+        if skip[i]:
+            x[i] = 0.0
         else:
-            j = JS.row_j[i]
-            r = JS.row_r[i]
-            JS.x[i] = -beta * capped_error(JW, j, r, G[j, r, CC])
+            j = row_j[i]
+            r = row_r[i]
+            x[i] = -beta * capped_error(JW, j, r, G[j, r, CC])
     factor_and_solve(JS)
     for i in range(JS.dims[0]):
-        if not JS.skip[i]:
-            j = JS.row_j[i]
-            shift_row(B, JW, JW.ab[j, 0], JW.ab[j, 1], j, JS.row_r[i], JS.x[i])
+        if not skip[i]:
+            j = row_j[i]
+            shift_row(B, JW, JW.ab[j, 0], JW.ab[j, 1], j, row_r[i], x[i])
