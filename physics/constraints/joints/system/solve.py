@@ -26,8 +26,9 @@ from . import ldl
 
 @row_inline
 def mark_skips(JW, JS, positions):
-    """Which rows sit out this pass; True if any row takes part."""
+    """Which rows sit out this pass: (whether any row takes part, whether any sits out)."""
     active = False
+    idle = False
     row_j, row_r, skips = JS.row_j, JS.row_r, JS.skip  # (each field's view made once: store/segments.py)
     for i in range(JS.dims[0]):
         j = row_j[i]
@@ -36,12 +37,13 @@ def mark_skips(JW, JS, positions):
             skip = True  # a spring row is not projected onto its rest position
         skips[i] = skip
         active |= not skip
-    return active
+        idle |= skip
+    return active, idle
 
 
 @row_inline
-def assemble(JW, JS):
-    """Ax from the rows' Jacobians; skipped rows become identity rows."""
+def assemble(JW, JS, idle):
+    """Ax from the rows' Jacobians; skipped rows (``idle``: there are some) become identity rows."""
     G = JW.G
     SB = JW.SB
     Ax = JS.Ax
@@ -54,7 +56,7 @@ def assemble(JW, JS):
         r = Q[q, 3]
         k = Q[q, 5]
         s = Q[q, 6]
-        if skip[jrow[j] + r] or skip[jrow[k] + s]:
+        if idle and (skip[jrow[j] + r] or skip[jrow[k] + s]):
             continue
         c = Q[q, 1]
         sj = Q[q, 4]
@@ -63,7 +65,7 @@ def assemble(JW, JS):
         kk = G[k, s, KA] if sk > 0 else G[k, s, KB]
         Ax[Q[q, 0]] += sj * sk * (SB[c, IM] * (G[j, r, NX] * G[k, s, NX] + G[j, r, NY] * G[k, s, NY])
                                   + SB[c, II] * kj * kk)
-    for i in range(JS.dims[0]):
+    for i in range(JS.dims[0] if idle else 0):
         if skip[i]:
             Ax[Ap[i + 1] - 1] = 1.0  # the diagonal is the last entry of its column
 
@@ -79,9 +81,10 @@ def factor_and_solve(JS):
 @row_kernel
 def solve_system(J, JW, JS, use_bias):
     """One velocity pass over all global equality rows (biased, or relax)."""
-    if not mark_skips(JW, JS, np.bool_(False)):
+    active, idle = mark_skips(JW, JS, np.bool_(False))
+    if not active:
         return
-    assemble(JW, JS)
+    assemble(JW, JS, idle)
     G = JW.G
     F = JW.F
     skip, row_j, row_r, x, Ap, Ax = JS.skip, JS.row_j, JS.row_r, JS.x, JS.Ap, JS.Ax
@@ -115,9 +118,10 @@ def solve_system(J, JW, JS, use_bias):
 @row_kernel
 def correct_system(B, JW, JS, beta):
     """One position pass: K dlam = -beta C (errors capped per row), applied to the positions."""
-    if not mark_skips(JW, JS, np.bool_(True)):
+    active, idle = mark_skips(JW, JS, np.bool_(True))
+    if not active:
         return
-    assemble(JW, JS)
+    assemble(JW, JS, idle)
     G = JW.G
     skip, row_j, row_r, x = JS.skip, JS.row_j, JS.row_r, JS.x
     for i in range(JS.dims[0]):
