@@ -22,9 +22,11 @@ from numba import typeof, types
 from numba.core import cgutils
 from numba.core.imputils import impl_ret_borrowed
 from numba.core.typing.templates import AttributeTemplate
-from numba.extending import (NativeValue, infer_getattr, lower_getattr_generic, models, register_model,
-                             typeof_impl, unbox)
+from numba.extending import infer_getattr, lower_getattr_generic, register_model, typeof_impl, unbox
 from numba.np.arrayobj import make_array, populate_array
+
+from .table_type import SourcesModel
+from .table_view import unbox_sources
 
 INT, FLOAT = 0, 1  # the buffers: a field's ``src``
 
@@ -53,10 +55,8 @@ class SegmentsType(types.Type):
         return types.Array(dt, 1 if width == 0 else 2, "C")
 
 
-@register_model(SegmentsType)
-class _SegmentsModel(models.StructModel):
-    def __init__(self, dmm, fe_type):
-        super().__init__(dmm, fe_type, [(f"s{i}", t) for i, t in enumerate(fe_type.sources)])
+register_model(SegmentsType)(SourcesModel)  # the value is the two buffers, as a table's is its sources
+unbox(SegmentsType)(unbox_sources)
 
 
 @infer_getattr
@@ -140,18 +140,3 @@ def segments_class(name: str, spec: dict, tag: str) -> type:
 @typeof_impl.register(Segments)
 def _typeof_segments(val, c):
     return val._numba_type
-
-
-@unbox(SegmentsType)
-def _unbox_segments(typ, obj, c):
-    """The two buffers unboxed from the record's ``_sources``."""
-    st = cgutils.create_struct_proxy(typ)(c.context, c.builder)
-    srcs = c.pyapi.object_getattr_string(obj, "_sources")
-    err = cgutils.alloca_once_value(c.builder, cgutils.false_bit)
-    for i, sty in enumerate(typ.sources):
-        nv = c.unbox(sty, c.pyapi.tuple_getitem(srcs, i))  # (a borrowed item)
-        setattr(st, f"s{i}", nv.value)
-        with c.builder.if_then(nv.is_error):
-            c.builder.store(cgutils.true_bit, err)
-    c.pyapi.decref(srcs)
-    return NativeValue(st._getvalue(), is_error=c.builder.load(err))

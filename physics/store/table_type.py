@@ -66,7 +66,9 @@ class TableType(types.Type):
 
 
 @register_model(TableType)
-class _TableModel(models.StructModel):
+class SourcesModel(models.StructModel):
+    """The value is its source arrays, ``s0``, ``s1``, ... (store/segments.py's records too)."""
+
     def __init__(self, dmm, fe_type):
         super().__init__(dmm, fe_type, [(f"s{i}", t) for i, t in enumerate(fe_type.sources)])
 

@@ -108,8 +108,9 @@ def _typeof_view(val, c):
 
 
 @unbox(TableType)
-def _unbox_view(typ, obj, c):
-    """Each source array unboxed from the view's ``_sources``."""
+def unbox_sources(typ, obj, c):
+    """Each source array unboxed from the object's ``_sources`` into the value's ``s0``, ``s1``, ...
+    (a table view's; store/segments.py's records unbox the same way)."""
     st = cgutils.create_struct_proxy(typ)(c.context, c.builder)
     srcs = c.pyapi.object_getattr_string(obj, "_sources")
     err = cgutils.alloca_once_value(c.builder, cgutils.false_bit)
