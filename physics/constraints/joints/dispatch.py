@@ -141,7 +141,12 @@ def solve_joints(c, B, J, JW, JS, use_bias, inv_h, eq_global):
 @row_kernel
 def project_joints(c, B, J, JW, JS):
     """One Newton step on the positions of the globally solved structures (the system's and the
-    lone joints' blocks), at the rows where the bodies are now."""
+    lone joints' blocks), at the rows where the bodies are now; nothing without such structures."""
+    blocks = False
+    for j in range(c.nj):
+        blocks |= JW.seq[j] == BLOCK
+    if not blocks and JS.dims[0] == 0:
+        return
     refresh_rows(c, B, J, JW)
     for j in range(c.nj):
         if JW.on[j] and JW.seq[j] == BLOCK:

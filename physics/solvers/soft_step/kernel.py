@@ -41,7 +41,7 @@ from ...constraints.body_rows import (gather_bodies, integrate_row_positions, in
 from ...constraints.contact_restitution import restitution_contacts
 from ...constraints.contact_soft import prepare_contacts, solve_contacts, store_impulses, warm_start_contacts
 from ...constraints.joints.dispatch import (project_joints, refresh_rows, solve_joints, store_joints,
-                                                warm_start_joints)
+                                            warm_start_joints)
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
 from ...constraints.joints.pivot import save_pivots
 from ...constraints.rotation_cap import PIVOT_COLUMNS
