@@ -18,14 +18,13 @@ from contextlib import contextmanager
 
 from numba.core import event, types
 
-from .store.segments import SegmentsType
-from .store.table_type import TableType
+from .store.table_type import SourcesType
 
 
 def holds_array(t) -> bool:
     """Whether a numba type is an array, a store table (store/table_type.py), a record of arrays
     (store/segments.py) or a tuple (named or not) holding one."""
-    if isinstance(t, (types.Array, TableType, SegmentsType)):
+    if isinstance(t, (types.Array, SourcesType)):
         return True
     if isinstance(t, types.BaseTuple):
         return any(holds_array(x) for x in t.types)

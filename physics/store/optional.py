@@ -27,21 +27,16 @@ def optional_springs(SF, SI):
     return None if SF is None else make_table("springs", (SF, SI))
 
 
-def _joints_or_none(F, I):
-    """The typing of optional_joints: None for a None-typed first array, else the table."""
-    if isinstance(F, types.NoneType):
-        return lambda F, I: None
-    return lambda F, I: make_table("joints", (F, I))
-
-
-def _springs_or_none(F, I):
-    """The typing of optional_springs, likewise."""
-    if isinstance(F, types.NoneType):
-        return lambda F, I: None
-    return lambda F, I: make_table("springs", (F, I))
+def _or_none(table):
+    """The typing of an optional table: None for a None-typed first array, else ``table``."""
+    def typing(F, I):
+        if isinstance(F, types.NoneType):
+            return lambda F, I: None
+        return table
+    return typing
 
 
 # inline, and the table made in place (an intrinsic, not a kernel): it is built the caller's way,
 # with or without numba's runtime, so a runtime-free caller counts no references
-overload(optional_joints, inline="always")(_joints_or_none)
-overload(optional_springs, inline="always")(_springs_or_none)
+overload(optional_joints, inline="always")(_or_none(lambda F, I: make_table("joints", (F, I))))
+overload(optional_springs, inline="always")(_or_none(lambda F, I: make_table("springs", (F, I))))

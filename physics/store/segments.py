@@ -15,8 +15,6 @@ as store/table_type.py is.
 """
 from __future__ import annotations
 
-import zlib
-
 import numpy as np
 from numba import typeof, types
 from numba.core import cgutils
@@ -25,30 +23,18 @@ from numba.core.typing.templates import AttributeTemplate
 from numba.extending import infer_getattr, lower_getattr_generic, register_model, typeof_impl, unbox
 from numba.np.arrayobj import make_array, populate_array
 
-from .table_type import SourcesModel
+from .table_type import SourcesModel, SourcesType
 from .table_view import unbox_sources
 
 INT, FLOAT = 0, 1  # the buffers: a field's ``src``
 
 
-class SegmentsType(types.Type):
+class SegmentsType(SourcesType):
     """``fields``: per field (name, src, directory index, width or 0 for 1-D, dtype); ``sources``:
     the numba types of ``I`` and ``F``."""
 
     def __init__(self, tag: str, fields: tuple, sources: tuple):
-        self.tag = tag
-        self.fields = fields
-        self.sources = sources
-        self.by_name = {f[0]: f for f in fields}
-        self._hash = zlib.crc32(repr((tag, fields, sources)).encode())  # stable across processes
-        super().__init__(name=f"{tag}Segments({', '.join(map(str, sources))})")
-
-    @property
-    def key(self):
-        return self.tag, self.fields, self.sources
-
-    def __hash__(self):
-        return self._hash
+        super().__init__(tag, fields, sources, "Segments")
 
     def field_type(self, name: str):
         _, _, _, width, dt = self.by_name[name]

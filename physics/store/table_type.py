@@ -36,11 +36,12 @@ from .table import separate
 WHOLE = -1   # a field's ``col`` when the field is a source array itself
 
 
-class TableType(types.Type):
-    """``fields``: per field (name, source index, first column or WHOLE, width or 0 for a 1-D
-    column, dtype); ``sources``: the numba types of the arrays the value holds."""
+class SourcesType(types.Type):
+    """A compact value over a few source arrays (a table here, a segments record in
+    store/segments.py): ``tag`` names the layout, ``fields`` place each field in the sources,
+    ``sources`` are the numba types of the arrays the value holds."""
 
-    def __init__(self, tag: str, fields: tuple, sources: tuple):
+    def __init__(self, tag: str, fields: tuple, sources: tuple, kind: str):
         self.tag = tag
         self.fields = fields
         self.sources = sources
@@ -49,7 +50,7 @@ class TableType(types.Type):
         # types, so its hash is computed once, from its text (the same in every process: the
         # hash travels with the type into numba's disk cache)
         self._hash = zlib.crc32(repr((tag, fields, sources)).encode())
-        super().__init__(name=f"{tag}Table({', '.join(map(str, sources))})")
+        super().__init__(name=f"{tag}{kind}({', '.join(map(str, sources))})")
 
     @property
     def key(self):
@@ -57,6 +58,14 @@ class TableType(types.Type):
 
     def __hash__(self):
         return self._hash
+
+
+class TableType(SourcesType):
+    """``fields``: per field (name, source index, first column or WHOLE, width or 0 for a 1-D
+    column, dtype); ``sources``: the numba types of the arrays the value holds."""
+
+    def __init__(self, tag: str, fields: tuple, sources: tuple):
+        super().__init__(tag, fields, sources, "Table")
 
     def field_type(self, name: str):
         _, src, col, width, dt = self.by_name[name]
