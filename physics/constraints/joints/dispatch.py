@@ -30,7 +30,7 @@ from .revolute import prepare_revolute, rows_revolute
 from .rotary import ROTARY, prepare_rotary, rows_rotary
 from .rows import solve_equality, solve_free_rows, warm_start_rows
 from .system.block import BLOCK, SEQUENTIAL, correct_block, solve_block
-from .system.solve import correct_system, solve_system
+from .system.solve import FACTORED, STALE, correct_system, solve_system
 from .weld import prepare_weld, rows_weld
 from .wheel import prepare_wheel, rows_wheel
 
@@ -82,23 +82,25 @@ def joint_rows(B, J, JW, j, a, b):
 
 
 @row_kernel
-def refresh_rows(c, B, J, JW):
+def refresh_rows(c, B, J, JW, JS):
     """Every joint's rows at the bodies' current positions.  A row's geometry depends on the
     positions only (the arms, the separation, the angle, the effective mass), so the rows built
     here serve every velocity pass until the bodies move again: this is the one place the kinds'
-    row builders are compiled into, and each is run once per move, not once per pass."""
+    row builders are compiled into, and each is run once per move, not once per pass.  The global
+    system's factors are of the old rows: stale (system/solve.py)."""
+    JS.dims[FACTORED] = STALE
     for j in range(c.nj):
         if JW.on[j]:
             joint_rows(B, J, JW, j, JW.ab[j, 0], JW.ab[j, 1])
 
 
 @row_kernel
-def warm_start_joints(c, B, J, JW, refresh):
+def warm_start_joints(c, B, J, JW, JS, refresh):
     """The rows at the current positions (unless ``refresh`` is False: the caller's last
     ``refresh_rows`` came after the last move), then every row's accumulated impulse applied
     again."""
     if refresh:
-        refresh_rows(c, B, J, JW)
+        refresh_rows(c, B, J, JW, JS)
     for j in range(c.nj):
         if JW.on[j]:
             warm_start_rows(J, JW, j, JW.ab[j, 0], JW.ab[j, 1])
@@ -147,7 +149,7 @@ def project_joints(c, B, J, JW, JS):
         blocks |= JW.seq[j] == BLOCK
     if not blocks and JS.dims[0] == 0:
         return
-    refresh_rows(c, B, J, JW)
+    refresh_rows(c, B, J, JW, JS)
     for j in range(c.nj):
         if JW.on[j] and JW.seq[j] == BLOCK:
             correct_block(B, JW, j, JW.ab[j, 0], JW.ab[j, 1], equality_rows_of(JW.mask[j]))

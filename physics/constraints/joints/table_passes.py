@@ -23,7 +23,7 @@ from .sync import displacement_from_table, rows_from_table, save_start, table_fr
 
 
 @row_kernel
-def begin_table_joints(c, B, J, JW, h, warm_starting):
+def begin_table_joints(c, B, J, JW, JS, h, warm_starting):
     """Rows, frames and the warm start for a pass span ``h`` (see the module doc)."""
     n = c.n
     gather_bodies(B, n, JW.SB)
@@ -31,7 +31,7 @@ def begin_table_joints(c, B, J, JW, h, warm_starting):
     if not warm_starting:
         zero_joint_impulses(J, c.nj)
     prepare_joints(c, B, J, JW, h, 0.0, 1.0, 0.0)
-    warm_start_joints(c, B, J, JW, np.bool_(True))
+    warm_start_joints(c, B, J, JW, JS, np.bool_(True))
     table_from_rows(B, n, JW.SB)
 
 
@@ -61,7 +61,7 @@ def classic_joint_substep(c, B, J, JW, JS, h, iterations, eq_global):
             B.x[i, 1] -= h * SB[i, VY]
             B.q[i] -= h * SB[i, W]
     displacement_from_table(B, n, JW)
-    warm_start_joints(c, B, J, JW, np.bool_(True))
+    warm_start_joints(c, B, J, JW, JS, np.bool_(True))
     inv_h = 1.0 / h
     for _ in range(iterations):
         solve_joints(c, B, J, JW, JS, np.bool_(False), inv_h, eq_global)

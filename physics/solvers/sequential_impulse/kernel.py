@@ -67,7 +67,7 @@ def si_step(ctx, par, B, C, S, W, M, J, JW, JS):
         solve_springs(B, S, c.ns, dt)
     eq_global = p.joint_solver == GLOBAL
     if J is not None:
-        begin_table_joints(c, B, J, JW, dt, p.warm_starting)
+        begin_table_joints(c, B, J, JW, JS, dt, p.warm_starting)
         save_pivots(c, B, J, JW, M.PV)
     contact_bias(C, nc, W, inv_dt, p.baumgarte, p.linear_slop, MAX_PUSH, p.position_correction == BAUMGARTE)
     warm_start_points(B, C, nc, W)

@@ -76,7 +76,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             save_velocities(SB, n, V0)
         coloured_pass(warm, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
         if J is not None:
-            warm_start_joints(c, B, J, JW, np.bool_(True))
+            warm_start_joints(c, B, J, JW, JS, np.bool_(True))
         for it in range(p.iterations):
             coloured_pass(solve, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:
@@ -91,7 +91,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
         if p.relax:
             coloured_pass(relax, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:
-                refresh_rows(c, B, J, JW)  # the bodies moved: the rows where they are now
+                refresh_rows(c, B, J, JW, JS)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, np.bool_(False), p.inv_h, eq_global)
         if bouncy:  # restitution works on the rows: hand them over and take its impulses back
             unpack(C, W, order, slots, R)

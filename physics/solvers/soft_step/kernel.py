@@ -96,7 +96,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
         if touching:
             warm_start_contacts(c, SB, C, R)
         if J is not None:
-            warm_start_joints(c, B, J, JW, not fresh)
+            warm_start_joints(c, B, J, JW, JS, not fresh)
         for it in range(iterations):
             if touching:
                 solve_contacts(c, p, SB, C, R, yes, yes)
@@ -114,7 +114,7 @@ def soft_step(ctx, par, B, C, S, R, SB, J, JW, JS, V0):
             if touching:
                 solve_contacts(c, p, SB, C, R, no, yes)
             if J is not None:
-                refresh_rows(c, B, J, JW)  # the bodies moved: the rows where they are now
+                refresh_rows(c, B, J, JW, JS)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, no, p.inv_h, eq_global)
                 fresh = yes  # nothing moves them before the next sub-step's warm start
         if bouncy:

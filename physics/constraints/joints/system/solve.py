@@ -11,6 +11,13 @@ and rows that are springs on purpose add their compliance gamma = K_rr is / ms
 The position pass solves K dlam = -beta C on the positions (a Newton step on the
 joint equations when beta = 1) and leaves springs alone.  Rows of joints that
 are off this step (asleep, broken) are decoupled (identity rows).
+
+The velocity passes' matrix depends only on the rows' geometry (refreshed once per move,
+dispatch.refresh_rows), the bodies' inverse masses and the rows taking part, all fixed between
+two moves; so it is assembled and factored once per move and its factors serve every velocity
+pass until the next (``dims[FACTORED]``; refresh_rows and the position pass mark them stale).
+A soft step solves twice per move (relax, then the next sub-step's solve) and a sequential
+impulse step once per velocity iteration on one set of rows: the same numbers, fewer factorisations.
 """
 from __future__ import annotations
 
@@ -22,6 +29,12 @@ from ..layout import CC, KA, KB, NX, NY, SOFT_EQ
 from ..rows import apply_row, row_speed
 from ..shift import capped_error, shift_row
 from . import ldl
+
+#: dims[FACTORED]: STALE (assemble and factor at the next velocity pass), READY (L and invD hold the
+#: factors of the velocity passes' matrix, gam the spring rows' compliances), or IDLE (every row
+#: sits out until the rows change)
+FACTORED = 4
+STALE, READY, IDLE = 0, 1, 2
 
 
 @row_inline
@@ -80,14 +93,20 @@ def factor_and_solve(JS):
 
 @row_kernel
 def solve_system(J, JW, JS, use_bias):
-    """One velocity pass over all global equality rows (biased, or relax)."""
-    active, idle = mark_skips(JW, JS, np.bool_(False))
-    if not active:
+    """One velocity pass over all global equality rows (biased, or relax), on the factors of the
+    last pass when the rows did not change since (module doc)."""
+    state = JS.dims[FACTORED]
+    if state == IDLE:
         return
-    assemble(JW, JS, idle)
+    if state == STALE:
+        active, idle = mark_skips(JW, JS, np.bool_(False))
+        if not active:
+            JS.dims[FACTORED] = IDLE
+            return
+        assemble(JW, JS, idle)
     G = JW.G
     F = JW.F
-    skip, row_j, row_r, x, Ap, Ax = JS.skip, JS.row_j, JS.row_r, JS.x, JS.Ap, JS.Ax
+    skip, row_j, row_r, x, Ap, Ax, gams = JS.skip, JS.row_j, JS.row_r, JS.x, JS.Ap, JS.Ax, JS.gam
     for i in range(JS.dims[0]):
         if skip[i]:
             x[i] = 0.0
@@ -97,15 +116,21 @@ def solve_system(J, JW, JS, use_bias):
         o = SOFT_EQ + 6 * r
         g = row_speed(JW, JW.ab[j, 0], JW.ab[j, 1], j, r)
         if F[j, o + 5] > 0.0:
-            d = Ap[i + 1] - 1
-            gam = Ax[d] * F[j, o + 5] / F[j, o + 4]
-            Ax[d] += gam
+            if state == STALE:
+                d = Ap[i + 1] - 1
+                gams[i] = Ax[d] * F[j, o + 5] / F[j, o + 4]
+                Ax[d] += gams[i]
+            gam = gams[i]
             x[i] = -(g + F[j, o + 3] * G[j, r, CC] + gam * J.impulse[j, r])
         elif use_bias:
             x[i] = -(g + F[j, o] * G[j, r, CC])
         else:
             x[i] = -g
-    factor_and_solve(JS)
+    if state == STALE:
+        factor_and_solve(JS)
+        JS.dims[FACTORED] = READY
+    else:
+        ldl.solve(JS.dims[0], JS.Lp, JS.Lnz, JS.Li, JS.Lx, JS.invD, JS.x)
     for i in range(JS.dims[0]):
         if not skip[i]:
             j = row_j[i]
@@ -117,7 +142,9 @@ def solve_system(J, JW, JS, use_bias):
 
 @row_kernel
 def correct_system(B, JW, JS, beta):
-    """One position pass: K dlam = -beta C (errors capped per row), applied to the positions."""
+    """One position pass: K dlam = -beta C (errors capped per row), applied to the positions.  Its
+    matrix (springs left out) replaces the velocity passes' factors: they are stale after it."""
+    JS.dims[FACTORED] = STALE
     active, idle = mark_skips(JW, JS, np.bool_(True))
     if not active:
         return

@@ -26,20 +26,24 @@ FILL_BUDGET = 6  # fill-in (matrix entries) allowed per joint of a component, pl
 FILL_SLACK = 64
 LONE_AS_BLOCK = [True]  # (False: lone joints go into the system; tests compare the two)
 
+#: ``dims``: the rows, contributions, matrix entries and L's entries, and whether L and invD hold
+#: the factors of the velocity passes' matrix at the rows' current geometry (solve.py: FACTORED)
+DIMS = 5
 #: the system's arrays (store/segments.py: two buffers, so a kernel call passes two arrays, not 19):
 #: integers or floats, and a row width for the 2-D contributions
 JointSystem = segments_class("JointSystem", {
     "dims": (INT, 0), "row_j": (INT, 0), "row_r": (INT, 0), "jrow": (INT, 0), "Ap": (INT, 0), "Ai": (INT, 0),
     "Ax": (FLOAT, 0), "contrib": (INT, 8), "Parent": (INT, 0), "Lnz": (INT, 0), "Lp": (INT, 0), "Li": (INT, 0),
     "Lx": (FLOAT, 0), "invD": (FLOAT, 0), "Y": (FLOAT, 0), "Pattern": (INT, 0), "Flag": (INT, 0), "x": (FLOAT, 0),
-    "skip": (INT, 0)}, "joint_system")
+    "skip": (INT, 0), "gam": (FLOAT, 0)}, "joint_system")
 
 
 def _system(nrows, nnz, ncontrib, nnzl, jcap):
     r = nrows
-    sys = JointSystem(dims=4, row_j=r, row_r=r, jrow=jcap, Ap=r + 1, Ai=nnz, Ax=nnz, contrib=ncontrib, Parent=r,
-                      Lnz=r, Lp=r + 1, Li=max(nnzl, 1), Lx=max(nnzl, 1), invD=r, Y=r, Pattern=r, Flag=r, x=r, skip=r)
-    sys.dims[:] = (nrows, ncontrib, nnz, nnzl)
+    sys = JointSystem(dims=DIMS, row_j=r, row_r=r, jrow=jcap, Ap=r + 1, Ai=nnz, Ax=nnz, contrib=ncontrib, Parent=r,
+                      Lnz=r, Lp=r + 1, Li=max(nnzl, 1), Lx=max(nnzl, 1), invD=r, Y=r, Pattern=r, Flag=r, x=r, skip=r,
+                      gam=r)
+    sys.dims[:] = (nrows, ncontrib, nnz, nnzl, 0)
     sys.jrow[:] = -1
     return sys
 
