@@ -16,17 +16,19 @@ def row_kernel(fn):
 
 def row_inline(fn):
     """``@row_inline``: a per-joint helper inlined into its caller by numba.  Without it every call
-    passes the tables by value (B, J and the scratch: some 3 KB of array structs), which cost
-    about 100 ns a call here; inlined, the pass over the joints is one flat loop."""
+    passes the tables by value (J and the scratch JW, each array's struct copied), which costs
+    more than a pass's own arithmetic on a joint: the velocity passes' joint-level work (the free
+    rows, the equality block, the lone block, the motor and mouse joints, the warm start) is
+    inlined into the verb's loop over the joints, its one caller, so each is still typed once
+    (docs/benchmarks.md has what it saved)."""
     return kernel(fn, inline="always")
 
 
 def row_part(fn):
-    """``@row_part``: a joint-level step of a verb (one kind's row builder or preparation, the
-    free rows' or the equality block's solve), compiled once as a function of its own and called
-    once per joint.  Inlining these into every verb typed and optimised each kind's code once per
-    verb; over the compact tables (store/table_type.py) a call passes a few array structs, so
-    compiling each once costs the step little.  The small helpers inside stay ``row_inline``."""
+    """``@row_part``: a joint-level step compiled once as a function of its own and called once per
+    joint: a kind's row builder or preparation, which run once per move or step and are reached
+    from more than one verb (inlined, each kind's code would be typed and optimised once per
+    verb).  The small helpers inside stay ``row_inline``."""
     return kernel(fn)
 
 

@@ -51,7 +51,7 @@ def clamp_disc(x, y, top):
     return x, y
 
 
-@row_part
+@row_inline
 def solve_motor_joint(J, JW, j, a, b, inv_h):
     bias = CORRECTION * inv_h
     # angular

@@ -7,7 +7,7 @@ target moves ``lb``; the sandbox drags bodies with it.
 """
 from __future__ import annotations
 
-from .jit import row_part
+from .jit import row_inline, row_part
 from ...store.joints import EQ1, ROWS
 from ..body_rows import II, IM
 from .layout import CC, MASS, MAX_MOTOR, SOFT_SPRING
@@ -32,7 +32,7 @@ def rows_mouse(B, J, JW, j, a, b):
         clear_row(JW, j, r)
 
 
-@row_part
+@row_inline
 def solve_mouse(J, JW, j, a, b):
     rate = JW.F[j, SOFT_SPRING]
     ms = JW.F[j, SOFT_SPRING + 1]

@@ -62,7 +62,7 @@ def apply_row(JW, a, b, j, r, lam):
     JW.SB[b, W] -= JW.SB[b, II] * lam * JW.G[j, r, KB]
 
 
-@row_part
+@row_inline
 def warm_start_rows(J, JW, j, a, b):
     """Apply every row's accumulated impulse (rows a joint does not use hold 0)."""
     for r in range(J.impulse.shape[1]):
@@ -112,7 +112,7 @@ def solve_limit(J, JW, j, r, a, b, use_bias, inv_h):
     apply_row(JW, a, b, j, r, new - acc)
 
 
-@row_part
+@row_inline
 def solve_free_rows(J, JW, j, a, b, mask, use_bias, inv_h):
     """Spring, motor, then the limits (Box2D v3's order), where the joint has them."""
     if mask & (1 << SPRING):
@@ -159,7 +159,7 @@ def solve_sym(m, k00, k01, k02, k11, k12, k22, g0, g1, g2):
             (c02 * g0 + c12 * g1 + c22 * g2) * inv)
 
 
-@row_part
+@row_inline
 def solve_equality(J, JW, j, a, b, m, use_bias):
     """The joint's m equality rows as one block, soft as the pass asks (see the module doc)."""
     o = 0 if use_bias else 3

@@ -101,7 +101,7 @@ def rhs(J, JW, a, b, j, r, kd, use_bias):
     return -g, kd
 
 
-@row_part
+@row_inline
 def solve_block(J, JW, j, a, b, m, use_bias):
     """One velocity pass over the joint's m equality rows (biased, or relax)."""
     no = False
