@@ -24,7 +24,7 @@ def spring_forces(S, ns, X, Q, V, W, F, T):
     for s in range(ns):
         a = S.a[s]
         b = S.b[s]
-        pax, pay, rax, ray, pbx, pby, rbx, rby = ends(X, Q, S, s)
+        pax, pay, rax, ray, pbx, pby, rbx, rby = ends(X, Q, None, S, s)
         vax = V[a, 0] - W[a] * ray
         vay = V[a, 1] + W[a] * rax
         vbx = 0.0
@@ -58,7 +58,7 @@ def _geometric_rate(B, S, s):
     diverges as fast as a positive one oscillates)."""
     a = S.a[s]
     b = S.b[s]
-    pax, pay, rax, ray, pbx, pby, rbx, rby = ends(B.x, B.q, S, s)
+    pax, pay, rax, ray, pbx, pby, rbx, rby = ends(B.x, B.q, None, S, s)
     inv_m = B.inv_m[a]
     if b >= 0:
         inv_m += B.inv_m[b]

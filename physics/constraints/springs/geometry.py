@@ -12,27 +12,40 @@ SKIP, EXPLICIT, IMPLICIT = 0, 1, 2  # a spring's kind in a sub-step (substep.py)
 
 
 @kernel
-def anchor(X, Q, i, lx, ly):
+def anchor(X, Q, R, i, lx, ly):
     """World position of body-frame point (lx, ly) of body i, and its arm r = R(q) l.
 
     ``X``, ``Q`` are positions and angles: the body table's, or an integrator's
-    intermediate state (Runge-Kutta evaluates forces there)."""
-    c = math.cos(Q[i])
-    s = math.sin(Q[i])
+    intermediate state (Runge-Kutta evaluates forces there).  ``R``: the bodies' (cos q, sin q)
+    when the caller worked them out once per body (``rotate``), or None (from ``Q`` here): a body
+    holding several springs' ends needs its angle's sine and cosine once, not once per end."""
+    if R is None:
+        c = math.cos(Q[i])
+        s = math.sin(Q[i])
+    else:
+        c = R[i, 0]
+        s = R[i, 1]
     rx = c * lx - s * ly
     ry = s * lx + c * ly
     return X[i, 0] + rx, X[i, 1] + ry, rx, ry
 
 
 @kernel
-def ends(X, Q, S, k):
+def rotate(R, i, q):
+    """Row i of a rotation cache (``anchor``'s R): (cos q, sin q)."""
+    R[i, 0] = math.cos(q)
+    R[i, 1] = math.sin(q)
+
+
+@kernel
+def ends(X, Q, R, S, k):
     """Spring k's anchors in the world and their arms: (pax, pay, rax, ray, pbx, pby, rbx, rby);
-    an end on the world (b < 0) is its fixed point with no arm."""
+    an end on the world (b < 0) is its fixed point with no arm (``R`` as ``anchor``'s)."""
     a = S.a[k]
     b = S.b[k]
-    pax, pay, rax, ray = anchor(X, Q, a, S.la[k, 0], S.la[k, 1])
+    pax, pay, rax, ray = anchor(X, Q, R, a, S.la[k, 0], S.la[k, 1])
     if b >= 0:
-        pbx, pby, rbx, rby = anchor(X, Q, b, S.lb[k, 0], S.lb[k, 1])
+        pbx, pby, rbx, rby = anchor(X, Q, R, b, S.lb[k, 0], S.lb[k, 1])
     else:
         pbx, pby, rbx, rby = S.lb[k, 0], S.lb[k, 1], 0.0, 0.0
     return pax, pay, rax, ray, pbx, pby, rbx, rby
@@ -45,15 +58,16 @@ def movable(B, i):
 
 
 @kernel
-def spring_rows(B, X, Q, S, ns, G, rows, bod, kinv, kind):
+def spring_rows(B, X, Q, R, S, ns, G, rows, bod, kinv, kind):
     """Axis, arms, length, stretch and tension (G), the axis row (rows[k], K in kinv) of every
-    spring with the bodies at positions ``X`` and angles ``Q`` (the velocities are the table's);
-    SKIP where the axis is undefined or the spring exerts nothing."""
+    spring with the bodies at positions ``X`` and angles ``Q`` (their rotations ``R``, as
+    ``anchor``'s; the velocities are the table's); SKIP where the axis is undefined or the spring
+    exerts nothing."""
     for k in range(ns):
         kind[k] = SKIP
         a = S.a[k]
         b = S.b[k]
-        pax, pay, rax, ray, pbx, pby, rbx, rby = ends(X, Q, S, k)
+        pax, pay, rax, ray, pbx, pby, rbx, rby = ends(X, Q, R, S, k)
         dx = pbx - pax
         dy = pby - pay
         length = math.hypot(dx, dy)

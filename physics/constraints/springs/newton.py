@@ -38,7 +38,7 @@ import numpy as np
 from ..._jit import kernel
 from ..rotation_cap import MAX_ROTATION
 from . import geometric as geo
-from .geometry import IMPLICIT, ends, spring_rows
+from .geometry import IMPLICIT, ends, rotate, spring_rows
 from .implicit import DIAG, JAW, JAX, JAY, JBW, JBX, JBY, RHS, ROW_FIELDS, apply_system, row_speed, solve_system
 
 # at most NEWTON_ITERATIONS, while the miss exceeds NEWTON_TOLERANCE of the step's energy (kinetic
@@ -49,13 +49,14 @@ LINE_SEARCH = 8
 
 
 @kernel
-def _predict(B, ids, nb, X0, Q0, h, XP, QP):
-    """Where the bodies are after a move of h with the table's velocities."""
+def _predict(B, ids, nb, X0, Q0, h, XP, QP, RP):
+    """Where the bodies are after a move of h with the table's velocities (RP: their rotations)."""
     for j in range(nb):
         i = ids[j]
         XP[i, 0] = X0[i, 0] + h * B.v[i, 0]
         XP[i, 1] = X0[i, 1] + h * B.v[i, 1]
         QP[i] = Q0[i] + h * B.w[i]
+        rotate(RP, i, QP[i])
 
 
 @kernel
@@ -86,16 +87,16 @@ def _kinetic_change(B, ids, nb, I0, VK, WK):
 
 
 @kernel
-def _incremental_potential(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP):
+def _incremental_potential(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP, RP):
     """Backward Euler's objective for the implicit springs, Phi(v) = 1/2 |v - v_e|_M^2 +
     sum_k 1/2 k_k C_k(x0 + h v)^2 (v_e the velocities before the implicit solve): its minimiser
     is the backward Euler step."""
-    _predict(B, ids, nb, X0, Q0, h, XP, QP)
+    _predict(B, ids, nb, X0, Q0, h, XP, QP, RP)
     phi = _kinetic_change(B, ids, nb, I0, VE, WE)
     for k in range(ns):
         if kind[k] != IMPLICIT:
             continue
-        pax, pay, _, _, pbx, pby, _, _ = ends(XP, QP, S, k)
+        pax, pay, _, _, pbx, pby, _, _ = ends(XP, QP, RP, S, k)
         c = math.hypot(pbx - pax, pby - pay) - S.rest[k]
         phi += 0.5 * S.k[k] * c * c
     return phi
@@ -156,8 +157,8 @@ def _grips(B, S, ns, h, ids, nb, kind, kind_at, G, rows, I0, WE, hold, LK):
 
 
 @kernel
-def _relinearise(B, S, ns, h, ids, nb, kind, kind_at, G, rows, bod, gam, kinv, axis, lin, XP, QP, VK, WK, VE, WE,
-                 hold):
+def _relinearise(B, S, ns, h, ids, nb, kind, kind_at, G, rows, bod, gam, kinv, axis, lin, XP, QP, RP, VK, WK, VE,
+                 WE, hold):
     """The implicit rows linearised at y (the positions XP, QP of the iterate VK, WK), to be
     solved from v_e (a held body's w where it is held, its inverse inertia out of the rows);
     returns the row count."""
@@ -165,7 +166,7 @@ def _relinearise(B, S, ns, h, ids, nb, kind, kind_at, G, rows, bod, gam, kinv, a
         i = ids[j]
         if hold[i]:
             B.inv_i[i] = 0.0
-    spring_rows(B, XP, QP, S, ns, G, rows, bod, kinv, kind_at)
+    spring_rows(B, XP, QP, RP, S, ns, G, rows, bod, kinv, kind_at)
     for j in range(nb):
         i = ids[j]
         B.v[i, 0] = VE[i, 0]
@@ -198,7 +199,7 @@ def _relinearise(B, S, ns, h, ids, nb, kind, kind_at, G, rows, bod, gam, kinv, a
 
 
 @kernel
-def _line_search(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP, VK, WK, VN, WN, phi):
+def _line_search(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP, RP, VK, WK, VN, WN, phi):
     """Along the projected path from the iterate (VK, WK) to Newton's step (VN, WN), halving while
     Phi does not fall; False (the iterate kept) when no halving descends."""
     step = 1.0
@@ -209,7 +210,7 @@ def _line_search(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP, VK, WK,
             B.v[i, 1] = VK[i, 1] + step * (VN[i, 1] - VK[i, 1])
             B.w[i] = WK[i] + step * (WN[i] - WK[i])
         _project(B, ids, nb, h, I0)
-        if _incremental_potential(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP) <= phi:
+        if _incremental_potential(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP, RP) <= phi:
             return True
         step *= 0.5
     for j in range(nb):
@@ -221,12 +222,13 @@ def _line_search(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP, VK, WK,
 
 
 @kernel(runtime=True)
-def refine(B, S, ns, h, ids, nb, X0, Q0, XP, QP, rows, bod, gam, kinv, kind, G, axis, lin, LK, lam, VE, WE, I0,
+def refine(B, S, ns, h, ids, nb, X0, Q0, XP, QP, RP, rows, bod, gam, kinv, kind, G, axis, lin, LK, lam, VE, WE, I0,
            scale):
     """Newton's iterations from the linearised solve (module doc) over the ``nb`` bodies ``ids``
     the springs join: ``X0, Q0`` their start, ``VE, WE`` the velocities before the implicit rows,
     ``I0`` their inverse inertias, ``scale`` the step's energy; ``axis``, ``lin`` each implicit
-    spring's row and stretch as last linearised; the rest the solve's scratch (substep.py)."""
+    spring's row and stretch as last linearised; ``XP, QP, RP`` the predicted positions, angles
+    and rotations; the rest the solve's scratch (substep.py)."""
     cap = B.inv_m.shape[0]
     VK = np.empty((cap, 2))  # the iterate v_y
     WK = np.empty(cap)
@@ -238,23 +240,23 @@ def refine(B, S, ns, h, ids, nb, X0, Q0, XP, QP, rows, bod, gam, kinv, kind, G, 
     for _newton in range(NEWTON_ITERATIONS):
         clipped = _project(B, ids, nb, h, I0)
         # the stretch where the move takes the bodies, against what the linearisation promised
-        _predict(B, ids, nb, X0, Q0, h, XP, QP)
-        spring_rows(B, XP, QP, S, ns, G, rows, bod, kinv, kind_at)
+        _predict(B, ids, nb, X0, Q0, h, XP, QP, RP)
+        spring_rows(B, XP, QP, RP, S, ns, G, rows, bod, kinv, kind_at)
         miss, floor = _mismatch(B, S, ns, h, kind, kind_at, axis, lin, G)
         regrip = _grips(B, S, ns, h, ids, nb, kind, kind_at, G, rows, I0, WE, hold, LK)
         tol = NEWTON_TOLERANCE * scale + floor
         if not clipped and not regrip and not miss > tol and not moved > tol:
             break
-        phi = _incremental_potential(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP)
+        phi = _incremental_potential(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP, RP)
         copy_velocities(B, ids, nb, VK, WK)
-        nr = _relinearise(B, S, ns, h, ids, nb, kind, kind_at, G, rows, bod, gam, kinv, axis, lin, XP, QP, VK, WK,
-                          VE, WE, hold)
+        nr = _relinearise(B, S, ns, h, ids, nb, kind, kind_at, G, rows, bod, gam, kinv, axis, lin, XP, QP, RP, VK,
+                          WK, VE, WE, hold)
         solve_system(B, nr, rows, bod, gam, lam)
         apply_system(B, nr, rows, bod, lam)
         for j in range(nb):
             B.inv_i[ids[j]] = I0[ids[j]]
         copy_velocities(B, ids, nb, VN, WN)
-        if not _line_search(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP, VK, WK, VN, WN, phi):
+        if not _line_search(B, S, ns, ids, nb, VE, WE, I0, X0, Q0, h, kind, XP, QP, RP, VK, WK, VN, WN, phi):
             break  # no descent along Newton's direction: v_y stays
         moved = _kinetic_change(B, ids, nb, I0, VK, WK)
     for j in range(nb):

@@ -26,7 +26,7 @@ import numpy as np
 
 from ..._jit import kernel
 from . import geometric as geo
-from .geometry import EXPLICIT, IMPLICIT, SKIP, movable, spring_rows
+from .geometry import EXPLICIT, IMPLICIT, SKIP, movable, rotate, spring_rows
 from .implicit import DIAG, JAW, JAX, JAY, JBW, JBX, JBY, RHS, ROW_FIELDS, apply_system, row_speed, solve_system
 from .newton import copy_velocities, refine
 
@@ -172,12 +172,14 @@ def solve_springs(B, S, ns, h):
     Q0 = np.empty(cap)
     XP = np.empty((cap, 2))
     QP = np.empty(cap)
+    RP = np.empty((cap, 2))  # (cos, sin) of QP: once per body, not once per spring end
     for j in range(nb):
         i = ids[j]
         X0[i, 0] = XP[i, 0] = B.x[i, 0]
         X0[i, 1] = XP[i, 1] = B.x[i, 1]
         Q0[i] = QP[i] = B.q[i]
-    spring_rows(B, XP, QP, S, ns, G, rows, bod, kinv, kind)
+        rotate(RP, i, QP[i])
+    spring_rows(B, XP, QP, RP, S, ns, G, rows, bod, kinv, kind)
     _classify(B, S, ns, h, G, kinv, kind, stiff_geo, LK, LC, LG)
     # Hooke + damper (seed eqs. 18-20), explicit, in sequence (symplectic Euler)
     for k in range(ns):
@@ -196,5 +198,5 @@ def solve_springs(B, S, ns, h):
     lam = np.zeros(nmax)
     solve_system(B, nr, rows, bod, gam, lam)
     apply_system(B, nr, rows, bod, lam)
-    refine(B, S, ns, h, ids, nb, X0, Q0, XP, QP, rows, bod, gam, kinv, kind, G, axis, lin, LK, lam, VE, WE, I0,
+    refine(B, S, ns, h, ids, nb, X0, Q0, XP, QP, RP, rows, bod, gam, kinv, kind, G, axis, lin, LK, lam, VE, WE, I0,
            scale)
