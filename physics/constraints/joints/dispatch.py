@@ -141,20 +141,27 @@ def solve_joints(c, B, J, JW, JS, use_bias, inv_h, eq_global):
 
 
 @row_kernel
+def correct_structures(c, B, JW, JS):
+    """One Newton step on the positions of the globally solved structures, at the rows as they
+    are: each lone joint's block, then the system (the position passes of every mode)."""
+    for j in range(c.nj):
+        if JW.on[j] and JW.seq[j] == BLOCK:
+            correct_block(B, JW, j, JW.ab[j, 0], JW.ab[j, 1], equality_rows_of(JW.mask[j]))
+    if JS.dims[0] > 0:
+        correct_system(B, JW, JS, 1.0)
+
+
+@row_kernel
 def project_joints(c, B, J, JW, JS):
-    """One Newton step on the positions of the globally solved structures (the system's and the
-    lone joints' blocks), at the rows where the bodies are now; nothing without such structures."""
+    """``correct_structures`` at the rows where the bodies are now; nothing without such
+    structures."""
     blocks = False
     for j in range(c.nj):
         blocks |= JW.seq[j] == BLOCK
     if not blocks and JS.dims[0] == 0:
         return
     refresh_rows(c, B, J, JW, JS)
-    for j in range(c.nj):
-        if JW.on[j] and JW.seq[j] == BLOCK:
-            correct_block(B, JW, j, JW.ab[j, 0], JW.ab[j, 1], equality_rows_of(JW.mask[j]))
-    if JS.dims[0] > 0:
-        correct_system(B, JW, JS, 1.0)
+    correct_structures(c, B, JW, JS)
 
 
 @row_kernel

@@ -6,7 +6,7 @@ in "Solver2D", 2024): each pass measures every row's position error at the
 current positions and moves the bodies along the row by -beta C / K, capped per
 correction (shift.py).  The equality rows of a structure in the global system
 are one Newton step on all its joint equations at once (beta = 1,
-system/solve.py ``correct_system``); sequential rows and the limits (only where
+dispatch.py ``correct_structures``); sequential rows and the limits (only where
 violated) take ``beta`` of their error per pass.  Springs are left alone.
 """
 from __future__ import annotations
@@ -14,14 +14,13 @@ from __future__ import annotations
 import numpy as np
 
 from ...store.joints import LOWER, MOTOR, MOUSE, UPPER
-from .dispatch import equality_rows_of, joint_rows
+from .dispatch import correct_structures, equality_rows_of, joint_rows
 from .jit import row_inline, row_kernel, row_part
 from .layout import CC, MASS, SOFT_EQ
 from .rows import block_entry, solve_sym
 from .shift import capped_error, shift_row
 from .sync import displacement_from_table
-from .system.block import BLOCK, SEQUENTIAL, correct_block
-from .system.solve import correct_system
+from .system.block import SEQUENTIAL
 
 
 @row_inline
@@ -84,8 +83,4 @@ def correct_joint_positions(c, B, J, JW, JS, eq_global, beta, iterations):
             if mask & (1 << UPPER):
                 correct_limit(B, JW, a, b, j, np.int64(UPPER), beta)
         if eq_global:
-            for j in range(c.nj):  # the structures of one joint, where the system is corrected
-                if JW.on[j] and JW.seq[j] == BLOCK:
-                    correct_block(B, JW, j, JW.ab[j, 0], JW.ab[j, 1], equality_rows_of(JW.mask[j]))
-            if JS.dims[0] > 0:
-                correct_system(B, JW, JS, 1.0)
+            correct_structures(c, B, JW, JS)
