@@ -70,13 +70,14 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
         save_pivots(c, B, J, JW, V0)
     # the pass kinds as plain integers: numba compiles a kernel once per literal argument
     warm, solve, relax = np.int64(WARM), np.int64(SOLVE), np.int64(RELAX)
+    fresh = np.bool_(False)  # the joints' rows are those of the bodies' current positions, as kernel.py
     for _ in range(p.substeps):
         integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
         if bouncy:
             save_velocities(SB, n, V0)
         coloured_pass(warm, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
         if J is not None:
-            warm_start_joints(c, B, J, JW, JS, np.bool_(True))
+            warm_start_joints(c, B, J, JW, JS, not fresh)
         for it in range(p.iterations):
             coloured_pass(solve, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:
@@ -86,6 +87,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
         integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0))
+        fresh = np.bool_(False)
         if project:
             project_joints(c, B, J, JW, JS)
         if p.relax:
@@ -93,6 +95,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             if J is not None:
                 refresh_rows(c, B, J, JW, JS)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, np.bool_(False), p.inv_h, eq_global)
+                fresh = np.bool_(True)  # nothing moves them before the next sub-step's warm start
         if bouncy:  # restitution works on the rows: hand them over and take its impulses back
             unpack(C, W, order, slots, R)
             restitution_contacts(c, p, SB, C, R, V0)
