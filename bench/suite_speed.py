@@ -49,7 +49,7 @@ def _ours(desc):
     if (v := sleep_threshold(desc)) is not None:
         sim.world.sleep_linear = v  # Box2D's per-body sleepThreshold, the same on every body (rain)
     bench = desc.get("bench", {})
-    return Scripted(sim, desc) if bench.get("events") or bench.get("drives") or starts_asleep(desc) else sim
+    return Scripted(sim, desc) if bench.get("events") or bench.get("drives") else sim
 
 
 def _pymunk(desc):
@@ -58,7 +58,7 @@ def _pymunk(desc):
     if bench.get("events") or bench.get("drives"):
         raise NotImplementedError("the pymunk adapter does not run bench.events / bench.drives")
     if starts_asleep(desc):
-        raise NotImplementedError("the pymunk adapter cannot create bodies asleep (box2d.awake = false)")
+        raise NotImplementedError("the pymunk adapter cannot create bodies asleep (awake = false)")
     return build("pymunk", desc)
 
 

@@ -192,14 +192,17 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
 
     @property
     def gravity(self) -> tuple[float, float]:
-        """Gravitational acceleration (m/s^2) as (x, y); default (0, -9.81). Setting it wakes every body. ValueError for a non-finite or malformed pair."""
+        """Gravitational acceleration (m/s^2) as (x, y); default (0, -9.81). Changing it wakes every body (setting the value it has changes nothing). ValueError for a non-finite or malformed pair."""
         return (float(self._gravity[0]), float(self._gravity[1]))
 
     @gravity.setter
     def gravity(self, value):
-        self._gravity = finite_vec(value, "gravity")
+        g = finite_vec(value, "gravity")
+        same = getattr(self, "_gravity", None) is not None and bool(np.array_equal(g, self._gravity))
+        self._gravity = g
         self._pipeline.dirty = True
-        self.wake_all()
+        if not same:
+            self.wake_all()
 
     @property
     def metadata(self) -> Metadata:

@@ -10,17 +10,33 @@ from .validate import checked_density, finite_num, finite_vec, friction_pair, sh
 from .world_fixtures import shape_code, shape_list
 
 
+def _awake_flag(awake, kind, vel, avel) -> bool:
+    """``add_body``'s ``awake``, checked: only a dynamic body at rest can be created asleep."""
+    if not isinstance(awake, (bool, np.bool_)):
+        raise ValueError(f"awake: must be True or False, got {shown(awake)}")
+    if not awake and kind != "dynamic":
+        raise ValueError(f"awake: only a dynamic body can be created asleep (kind is {kind!r})")
+    if not awake and (vel[0] != 0.0 or vel[1] != 0.0 or avel != 0.0):
+        raise ValueError("awake: a body created asleep is at rest; give no velocity or "
+                         "angular_velocity, or create it awake")
+    return bool(awake)
+
+
 class BodiesMixin:
     """The body half of :class:`~physics.World` (see world.py for the state it uses)."""
 
     # -- bodies -----------------------------------------------------------
     def add_body(self, shape, kind: str = "dynamic", position=(0.0, 0.0), angle: float = 0.0,
                  velocity=(0.0, 0.0), angular_velocity: float = 0.0, density: float = 1.0,
-                 restitution: float = 0.0, friction=0.6, name: str | None = None) -> Body:
+                 restitution: float = 0.0, friction=0.6, name: str | None = None, awake: bool = True) -> Body:
         """Add a body made of one shape or a list of shapes (one fixture each).
 
         ``density``, ``restitution`` and ``friction`` apply to every fixture this creates;
         mass, centre of mass and inertia are the sums over the fixtures (parallel axes).
+        ``awake=False`` creates a dynamic body asleep, at rest, in an island of its own (Box2D's
+        ``isAwake = false``): it costs nothing until something touches it or ``wake()`` is
+        called, and touching bodies wake one another contact by contact.  It is ignored while
+        ``world.sleeping`` is off, as a sleeping body would be woken at once.
         Every argument is validated and a ValueError names the bad field (a dynamic body of
         segments only has no area: refused)."""
         self._check_editable("add_body")
@@ -36,6 +52,7 @@ class BodiesMixin:
         self._check_mass(KINDS[kind], shapes, dens)
         rest = finite_num(restitution, "restitution", lo=0.0, hi=1.0)
         mu_s, mu_d = friction_pair(friction)
+        asleep = not _awake_flag(awake, kind, vel, avel) and self.sleeping
         if name is not None:
             self._body_names.check_new(name)
         oid, s = self._bodies.add()
@@ -52,6 +69,8 @@ class BodiesMixin:
             B.w[s] = avel
         self._handles[oid] = h
         self._body_names.add(oid, name)
+        if asleep:
+            self._put_to_sleep([h])
         self._pipeline.invalidate()
         return h
 

@@ -8,7 +8,8 @@ What is read (see docs/scene-format.md and issues 13/14 for the keys of both eng
   ``hit_event_threshold`` (defaults: Box2D's).
 * each body: ``kind``, ``position`` (origin), ``angle``, ``velocity`` (of the centre of mass),
   ``angular_velocity``, ``shape`` or ``shapes`` with per-shape materials and filters, body-level
-  ``density`` / ``friction`` / ``restitution``; Box2D-only under ``body.box2d``: ``bullet``,
+  ``density`` / ``friction`` / ``restitution``, ``awake`` (false: created asleep; ``box2d.awake``
+  overrides it); Box2D-only under ``body.box2d``: ``bullet``,
   ``enable_sleep``, ``awake``, ``allow_fast_rotation``, ``gravity_scale``, ``linear_damping``,
   ``angular_damping``, ``sleep_threshold``.
 * ``joints`` (``joints.py``) and version-1 ``springs``.
@@ -66,7 +67,7 @@ def body_records(body, slot, path):
     av = float(body.get("angular_velocity", 0.0))
     ext = body.get("box2d", {})
     flags = (1 if ext.get("bullet") else 0) | (0 if ext.get("enable_sleep", True) else 2) \
-        | (0 if ext.get("awake", True) else 4) | (8 if ext.get("allow_fast_rotation") else 0)
+        | (0 if ext.get("awake", body.get("awake", True)) else 4) | (8 if ext.get("allow_fast_rotation") else 0)
     recs = [[OP_BODY, BODY_TYPES[kind], pos[0], pos[1], angle, 0.0, 0.0, 0.0, float(flags),
              float(ext.get("gravity_scale", 1.0)), float(ext.get("linear_damping", 0.0)),
              float(ext.get("angular_damping", 0.0)), float(ext.get("sleep_threshold", -1.0))]]

@@ -119,8 +119,8 @@ def _suite_md(res, rel):
             "Every scene is built from the same description in both engines; `bench.events` (rain's ragdolls, "
             "added and removed inside the timed loop) and `bench.drives` (junkyard's pusher) run on both sides "
             "(`bench/suite/scripts.py` for ours: rain's ragdolls are created through the world's Python calls, "
-            "Box2D's in C, and both costs count); smash's wall, created asleep in Box2D, is put to sleep on our "
-            "side by the untimed first step; `status` says how a scene still differs (`bench.suite.NEEDS`) "
+            "Box2D's in C, and both costs count); smash's wall is created asleep in both (the format's "
+            "`awake: false`: each box in an island of its own, woken contact by contact); `status` says how a scene still differs (`bench.suite.NEEDS`) "
             "and why pymunk sits one out. " + _suite_steps(rows), "",
             *table_md(rows), "", "![suite](../bench/results/box2d_suite.png)", ""]
 

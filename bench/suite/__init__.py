@@ -15,11 +15,10 @@ SUITE = {"compounds": compounds, "joint_grid": joint_grid, "junkyard": junkyard,
 # What Stelkropp's core still lacks that a suite scene asks of Box2D (tests/test_suite_speed.py
 # checks each is still missing, so a line cannot outlive the feature). Everything else in the
 # scenes is built as benchmarks.c builds it: shapes, compound bodies, joints, filters; and the
-# scripts (rain's ragdolls, junkyard's pusher), smash's sleeping wall and rain's sleep threshold
-# are run for our side by the harness (suite/scripts.py) as Box2D's side runs them.
+# scripts (rain's ragdolls, junkyard's pusher) and rain's sleep threshold are run for our side by
+# the harness (suite/scripts.py) as Box2D's side runs them; smash's wall is created asleep in both
+# (the format's "awake": false, read by both engines).
 LACKS = {
-    # bridged for our side by the harness (scripts.py: the untimed first step sleeps resting islands)
-    "start_asleep": "bodies created asleep (Box2D awake = false)",
     "linear_damping": "linear damping 0.1 on heads and lower arms (Box2D linearDamping): ours undamped",
     "hit_events": "hit events on every box (Box2D enableHitEvents, gathered in its step): ours makes "
                   "them only when world.contact_events is read, and the bench reads none",
@@ -29,7 +28,7 @@ LACKS = {
 NEEDS = {
     "large_pyramid": [],
     "many_pyramids": [],
-    "smash": [],  # LACKS["start_asleep"], bridged in the harness
+    "smash": [],
     "joint_grid": [],
     "rain": [LACKS["linear_damping"]],
     "spinner": [],  # the bar's enableSleep = false: its motor never lets it rest, in either engine

@@ -57,7 +57,7 @@ def smash(columns=120, rows=80):
     for i in range(columns):
         for j in range(rows):
             bodies.append(body(box(0.5 * d, 0.5 * d), i * d + 30.0, (j - rows / 2.0) * d, friction=0.6,
-                               box2d={"awake": False}))
+                               awake=False))
     return scene("smash", "a heavy box smashes a wall of sleeping boxes", bodies, gravity=(0.0, 0.0),
                  sleeping=True, steps=300, source=f"{SRC} CreateSmash")
 

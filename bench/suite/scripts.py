@@ -1,8 +1,7 @@
 """A suite scene's ``bench`` script run on Stelkropp's side, as bench/box2d/engine.py runs it on
 Box2D's: ``events`` (bodies and joints added or removed before the step they name: the ragdoll
 rain) and ``drives`` (a kinematic body steered to ``center + amplitude sin(omega t + phase)``:
-the junkyard pusher), and bodies created asleep (smash's wall), so that both engines are timed
-on the same work.
+the junkyard pusher), so that both engines are timed on the same work.
 
 Events are checked and turned into (shape, fixture) lists once, before any timed step (Box2D's
 side pre-translates them into shim records the same way); inside the timed loop only the bodies
@@ -40,8 +39,9 @@ def sleep_threshold(desc):
 
 
 def starts_asleep(desc) -> bool:
-    """Whether some body of ``desc`` is created asleep in Box2D (``box2d.awake = false``)."""
-    return any(not b.get("box2d", {}).get("awake", True) for b in desc["bodies"])
+    """Whether some body of ``desc`` is created asleep (the format's ``awake: false``, or Box2D's
+    ``box2d.awake = false``)."""
+    return any(not b.get("box2d", {}).get("awake", b.get("awake", True)) for b in desc["bodies"])
 
 
 class Scripted:
@@ -55,12 +55,6 @@ class Scripted:
         for e in bench.get("events", []):
             k = int(e["step"])
             self.events.setdefault(k, []).append((list(e.get("remove", [])), *_checked(e.get("add", {}), k)))
-        # bodies Box2D creates asleep (box2d.awake = false): the core cannot create a body asleep,
-        # so the first step (timed apart, never in ms/step) runs with time_to_sleep 0, which puts
-        # every resting island to sleep, and then wakes the others with their initial velocities
-        self.wake_after_first = [(sim.world.bodies[i], b.get("velocity", (0.0, 0.0)), b.get("angular_velocity", 0.0))
-                                 for i, b in enumerate(desc["bodies"]) if b.get("box2d", {}).get("awake", True)
-                                 and b.get("kind", "dynamic") != "static"] if starts_asleep(desc) else None
         self.drives = []
         for d in bench.get("drives", []):
             b = self.world.body(d["body"])
@@ -98,22 +92,8 @@ class Scripted:
     def step(self):
         """The events and drives of this step, then one world step."""
         self.before(self.steps)
-        if self.steps == 0 and self.wake_after_first is not None:
-            self._first_asleep()
-        else:
-            self.sim.step()
+        self.sim.step()
         self.steps += 1
-
-    def _first_asleep(self):
-        w = self.world
-        keep, w.time_to_sleep = w.time_to_sleep, 0.0
-        try:
-            self.sim.step()
-        finally:
-            w.time_to_sleep = keep
-        for b, v, av in self.wake_after_first:  # sleeping zeroed their velocities
-            b.wake()
-            b.velocity, b.angular_velocity = tuple(v), float(av)
 
     def __getattr__(self, name):  # state(), origins(), recs ... of the wrapped sim
         return getattr(self.sim, name)

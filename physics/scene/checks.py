@@ -243,6 +243,8 @@ def body_problems(bodies, bad: Rejected, version: int = fmt.VERSION):
             continue
         if path in bad:  # something in this body is wrong already: build nothing of it
             continue
+        if b.get("awake") is True and "asleep" in b:
+            out.append(((*path, "awake"), "true contradicts asleep (the island the body sleeps in); give one"))
         specs, where = _specs(b, path, version, out)
         if not specs:
             continue

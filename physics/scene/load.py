@@ -80,12 +80,13 @@ def _build(data, shapes, source):
 
 
 # what a running world changed in a body, set once every body is built
-_STATE = ("asleep", "sleep_time", "center_of_mass")
+_STATE = ("asleep", "awake", "sleep_time", "center_of_mass")
 
 
 def _sleep_state(world, bodies, handles) -> None:
     """Each body's sleep timer, and the sleeping islands: one fresh island label per number the
-    file gives (numbers are the file's, labels the world's), at rest."""
+    file gives (numbers are the file's, labels the world's), and one for each body marked
+    ``awake: false`` without a number; all at rest."""
     islands = {}
     for i, b in enumerate(bodies):
         body = handles[i]
@@ -93,8 +94,12 @@ def _sleep_state(world, bodies, handles) -> None:
             world._bodies.view.sleep_t[body._s] = b["sleep_time"]
         if "center_of_mass" in b:  # exact where no origin reaches it (dump.py)
             world._bodies.view.x[body._s] = b["center_of_mass"]
-        if "asleep" in b and body.kind == "dynamic" and world.sleeping:
+        if body.kind != "dynamic" or not world.sleeping:
+            continue
+        if "asleep" in b:
             islands.setdefault(b["asleep"], []).append(body)
+        elif b.get("awake", True) is False:  # an island of its own, apart from every file number
+            islands[("own", i)] = [body]
     for members in islands.values():
         world._put_to_sleep(members)
 

@@ -126,6 +126,10 @@ _BODY = {
                    "description": "a sleeping body: the number of its island (bodies with one number sleep and "
                                   "wake together; dynamic bodies only); absent: awake.  A sleeping body is at "
                                   "rest: its velocity is not used"},
+        "awake": {"type": "boolean", "default": True,
+                  "description": "false: the body starts asleep, at rest, in an island of its own (Box2D's "
+                                 "isAwake = false; dynamic bodies only, and only while the world's sleeping is "
+                                 "on); touching bodies wake it.  asleep, when given, names its island instead"},
         "sleep_time": _num("time (s) the body has stayed below the sleep thresholds", minimum=0, default=0.0),
         "color": {"type": "string", "pattern": COLOR_PATTERN, "examples": ["#e07a5f"],
                   "description": "fill colour in the sandbox, \"#rrggbb\" (ignored by the physics); "
