@@ -222,8 +222,22 @@ def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev, full=None):
     """
     keys = pair_keys(F, pairs, npairs)
     order = np.empty(npairs, np.int64)
-    argsort_into(keys, npairs, order, np.empty(npairs, np.int64))
+    _order_into(keys, npairs, order)
     return collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, manifold_scratch())
+
+
+@kernel(inline="always")
+def _order_into(keys, n, order):
+    """The ascending order of keys[:n] into ``order``: a merge sort, unless the keys already
+    ascend.  They do while the fixtures' slots follow their ids (no removal yet): the broad
+    phase's pairs come sorted by slot.  The keys of distinct pairs are distinct, so both give
+    the one order there is."""
+    for k in range(1, n):
+        if keys[k] <= keys[k - 1]:
+            argsort_into(keys, n, order, np.empty(n, np.int64))
+            return
+    for k in range(n):
+        order[k] = k
 
 
 @kernel(runtime=True)
@@ -231,10 +245,10 @@ def sort_pairs(fid, pairs, npairs, keys, order):
     """The pairs' keys (``pair_keys``; ``fid``: the fixtures' ids) into ``keys`` and their
     ascending order into ``order``, both at least ``npairs`` long, without allocating for a small
     world: an insertion sort up to 32 pairs (the keys are distinct, so any sort gives this
-    order), a merge sort beyond."""
+    order), ``_order_into`` beyond."""
     pair_keys_into(fid, pairs, npairs, keys)
     if npairs > 32:
-        argsort_into(keys, npairs, order, np.empty(npairs, np.int64))
+        _order_into(keys, npairs, order)
         return
     for k in range(npairs):
         j = k
