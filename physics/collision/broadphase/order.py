@@ -2,9 +2,11 @@
 
 The solver visits contacts in the order the broad phase emits them, and
 Gauss-Seidel results depend on that order; sorting makes every method (and
-so the "auto" choice) give bit-identical simulations.  A counting sort on i
-followed by insertion sort inside each i bucket (a few entries each) beats a
-comparison sort of all pairs.
+so the "auto" choice) give bit-identical simulations.  Two stable counting
+sorts, by j and then by i (an LSD radix sort, Knuth, TAOCP vol. 3, 5.2.5),
+cost O(count + n) whatever order the sweep emitted the pairs in; sorting
+each i bucket by insertion instead was quadratic in the bucket, and a fast
+body's fat box fills its bucket with partners in sweep order, not slot order.
 """
 from __future__ import annotations
 
@@ -12,32 +14,30 @@ from ..._jit import kernel
 
 
 @kernel
-def sort_pairs(tmp, count, n, head, pairs):
-    """Write tmp[:count] into pairs[:count] sorted by (i, j).
-
-    ``head`` is int32 scratch of at least n + 1 entries.
-    """
+def _count_by(src, count, n, head, col, dst):
+    """src[:count] into dst[:count], stably ordered by column ``col`` (values below n)."""
     for s in range(n + 1):
         head[s] = 0
     for k in range(count):
-        head[tmp[k, 0] + 1] += 1
+        head[src[k, col] + 1] += 1
     for s in range(n):
         head[s + 1] += head[s]
     for k in range(count):
-        i = tmp[k, 0]
-        dst = head[i]
-        head[i] = dst + 1
-        pairs[dst, 0] = i
-        pairs[dst, 1] = tmp[k, 1]
-    # head[i] now ends bucket i; buckets are consecutive from 0
-    start = 0
-    for s in range(n):
-        end = head[s]
-        for a in range(start + 1, end):
-            j = pairs[a, 1]
-            b = a - 1
-            while b >= start and pairs[b, 1] > j:
-                pairs[b + 1, 1] = pairs[b, 1]
-                b -= 1
-            pairs[b + 1, 1] = j
-        start = end
+        v = src[k, col]
+        d = head[v]
+        head[v] = d + 1
+        dst[d, 0] = src[k, 0]
+        dst[d, 1] = src[k, 1]
+
+
+@kernel
+def sort_pairs(tmp, count, n, head, pairs):
+    """Write tmp[:count] into pairs[:count] sorted by (i, j); tmp[:count] is overwritten.
+
+    ``head`` is int32 scratch of at least n + 1 entries.
+    """
+    _count_by(tmp, count, n, head, 1, pairs)
+    _count_by(pairs, count, n, head, 0, tmp)
+    for k in range(count):
+        pairs[k, 0] = tmp[k, 0]
+        pairs[k, 1] = tmp[k, 1]
