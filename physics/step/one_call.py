@@ -183,7 +183,7 @@ class OneCall:
         type, and so the compiled driver, is the same for both broad phases."""
         i4 = np.int32
         return (np.full(2, -1, np.int64), np.arange(nf, dtype=i4), np.empty(nf), np.empty(nf, i4),
-                np.empty(nf, i4), np.empty(nf + 2, i4), np.empty(3 * nf, i4), np.empty((npairs, 2), i4),
+                np.empty(nf, i4), np.empty(nf + 2, i4), np.empty(6 * nf, i4), np.empty((npairs, 2), i4),
                 np.empty(nf + 1, i4))
 
     def _v0(self, rows: int) -> np.ndarray:

@@ -49,7 +49,7 @@ class _Scratch:
         self.b0 = np.empty(cap, np.int32)
         self.b1 = np.empty(cap, np.int32)
         self.bstart = np.empty(cap + 2, np.int32)
-        self.ent = np.empty(3 * cap, np.int32)
+        self.ent = np.empty(6 * cap, np.int32)
         self.head = np.empty(cap + 1, np.int32)
         self.state[:] = -1  # the kept order no longer matches
 

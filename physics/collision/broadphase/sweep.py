@@ -21,6 +21,7 @@ import math
 import numpy as np
 
 from ..._jit import kernel
+from ...store import STATIC
 from ..argsort import argsort_into
 from .filter import can_pair, overlap, push
 from .order import sort_pairs
@@ -28,6 +29,9 @@ from .order import sort_pairs
 # band height in typical box extents: 2 keeps a body's band to about three
 # rows of neighbours while a body rarely spans more than two bands
 BAND_EXTENTS = 2.0
+# boxes the typical extent is estimated from (evenly spaced slots): the bands
+# only pace the sweep, the pairs found are the same for any band height
+EXTENT_SAMPLE = 256
 
 
 @kernel
@@ -106,10 +110,12 @@ def _choose_bands(aabb, n, perp, b0, b1):
     if m > 8 and spread > 0.0:
         # geometric mean: one huge ground box must not set the band height
         floor = 1e-6 * spread
-        for i in range(n):
+        sampled = 0
+        for i in range(0, n, max(1, n // EXTENT_SAMPLE)):
             if _finite(aabb, i):
                 logsum += math.log(max(aabb[i, perp + 2] - aabb[i, perp], floor))
-        typical = math.exp(logsum / m)
+                sampled += 1
+        typical = math.exp(logsum / sampled) if sampled else spread
         nb = int(min(spread / (BAND_EXTENTS * typical), m // 2))
         nb = max(nb, 1)
     scale = nb / spread if spread > 0.0 else 0.0
@@ -151,7 +157,25 @@ def _fill_bands(order, n, b0, b1, nb, bstart, ent):
 
 
 @kernel
-def _sweep_bands(B, nb, axis, b0, bstart, ent, tmp):
+def _resting(kind, awake, i):
+    """Asleep or static: two resting boxes never pair (filter.can_pair)."""
+    return awake[i] == 0 or kind[i] == STATIC
+
+
+@kernel
+def _next_active(B, nb, bstart, ent, nxt):
+    """nxt[a]: the first entry at or after a in a's band that is not resting (its band's end if
+    none), so that a resting box's scan visits only the boxes it can pair with."""
+    for b in range(nb):
+        nx = bstart[b + 1]
+        for a in range(bstart[b + 1] - 1, bstart[b] - 1, -1):
+            if not _resting(B.kind, B.awake, ent[a]):
+                nx = a
+            nxt[a] = nx
+
+
+@kernel
+def _sweep_bands(B, nb, axis, b0, bstart, ent, nxt, tmp):
     aabb = B.aabb
     kind = B.kind
     awake = B.awake
@@ -161,14 +185,20 @@ def _sweep_bands(B, nb, axis, b0, bstart, ent, tmp):
         for a in range(bstart[b], end):
             i = ent[a]
             hi = aabb[i, axis + 2]
-            for c in range(a + 1, end):
+            resting = _resting(kind, awake, i)
+            c = a + 1
+            while c < end:
+                if resting:  # a sleeping wall or the ground costs nothing against itself
+                    c = nxt[c]
+                    if c >= end:
+                        break
                 j = ent[c]
                 if aabb[j, axis] > hi:
                     break
-                if max(b0[i], b0[j]) != b:
-                    continue  # reported in the band where the overlap starts
-                if overlap(aabb, i, j) and can_pair(kind, awake, i, j):
+                # reported in the band where the overlap starts
+                if max(b0[i], b0[j]) == b and overlap(aabb, i, j) and can_pair(kind, awake, i, j):
                     k = push(tmp, k, i, j)
+                c += 1
     return k
 
 
@@ -178,7 +208,8 @@ def sweep_pairs(B, n, state, order, key, b0, b1, bstart, ent, tmp, head, pairs):
 
     When the count exceeds ``tmp``/``pairs`` the caller grows both and calls
     again.  ``state`` = [n, axis] of the order kept from the last call.
-    Scratch sizes: order/key/b0/b1 n, bstart n + 2, ent 3n, head n + 1.
+    Scratch sizes: order/key/b0/b1 n, bstart n + 2, ent 6n (the bands' entries, then each
+    entry's next active one), head n + 1.
     """
     aabb = B.aabb
     axis = _pick_axis(aabb, n)
@@ -190,7 +221,9 @@ def sweep_pairs(B, n, state, order, key, b0, b1, bstart, ent, tmp, head, pairs):
     state[1] = axis
     nb, _ = _choose_bands(aabb, n, 1 - axis, b0, b1)
     _fill_bands(order, n, b0, b1, nb, bstart, ent)
-    k = _sweep_bands(B, nb, axis, b0, bstart, ent, tmp)
+    half = ent.shape[0] // 2
+    _next_active(B, nb, bstart, ent, ent[half:])
+    k = _sweep_bands(B, nb, axis, b0, bstart, ent, ent[half:], tmp)
     if k <= tmp.shape[0] and k <= pairs.shape[0]:
         sort_pairs(tmp, k, n, head, pairs)
     return k
