@@ -4,6 +4,7 @@ from __future__ import annotations
 import math
 
 from .._jit import kernel
+from ..store.bodies import STATIC
 from ..store.fixtures import CHAIN_SEGMENT, CIRCLE
 
 
@@ -52,23 +53,48 @@ def _fixture_box(F, V, f, px, py, c, s, margin):
     return lo_x - margin, lo_y - margin, hi_x + margin, hi_y + margin
 
 
+@kernel
+def _kept(B, F, f, i):
+    """Fixture f's world geometry is what this step would compute again: its body is static
+    (it never moves and has no velocity), or asleep and was already asleep when f was last
+    computed (at rest since, with no velocity: waking or any edit makes it compute again)."""
+    return B.kind[i] == STATIC or (B.awake[i] == 0 and F.awake[f] == 0)
+
+
+@kernel
+def _clear_box(B, i):
+    B.aabb[i, 0] = math.inf
+    B.aabb[i, 1] = math.inf
+    B.aabb[i, 2] = -math.inf
+    B.aabb[i, 3] = -math.inf
+
+
 @kernel(entry=True)
-def update_geometry(B, F, V, n, nf, dt, spec):
-    """Transform every fixture to world space and refresh the fixtures' and bodies' AABBs.
+def update_geometry(B, F, V, n, nf, dt, spec, full=True):
+    """Transform the fixtures to world space and refresh the fixtures' and bodies' AABBs.
 
     Each AABB is fattened by m_i = spec/2 + dt (|v_i| + |w_i| r_i) of its body: two boxes
     then overlap whenever the bodies can come within the pair's speculative margin during
     the step, so the narrow phase never misses a fast pair.  A body's AABB is the union of
     its fixtures' (for the sandbox's overlays and queries); the fixtures also get the body's
     kind and awake flag, which the broad phase reads.
+
+    Unless ``full`` (after an edit, or a change of dt or of the speculative distance, which
+    the caller says), static and sleeping bodies keep their geometry (``_kept``): the same
+    numbers, and a sleeping pile or a long static chain costs nothing here.
     """
-    for i in range(n):
-        B.aabb[i, 0] = math.inf
-        B.aabb[i, 1] = math.inf
-        B.aabb[i, 2] = -math.inf
-        B.aabb[i, 3] = -math.inf
+    if full:
+        for i in range(n):
+            _clear_box(B, i)
+    else:  # a body's fixtures are all kept or none (they share the flags _kept reads)
+        for f in range(nf):
+            i = F.body[f]
+            if not _kept(B, F, f, i):
+                _clear_box(B, i)
     for f in range(nf):
         i = F.body[f]
+        if not full and _kept(B, F, f, i):
+            continue
         c = math.cos(B.q[i])
         s = math.sin(B.q[i])
         margin = 0.5 * spec + dt * (math.hypot(B.v[i, 0], B.v[i, 1]) + abs(B.w[i]) * B.bound_r[i])

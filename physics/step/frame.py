@@ -16,13 +16,14 @@ from .push_out import push_sum
 
 
 @kernel(entry=True)
-def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums):
-    """Save the last finite state, then refresh the ``nf`` fixtures' world geometry and AABBs;
-    the energy guard's sums of the state the step starts from into ``sums`` (energy_sums.py)."""
+def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums, full):
+    """Save the last finite state, then refresh the ``nf`` fixtures' world geometry and AABBs
+    (all of it when ``full``: update_geometry); the energy guard's sums of the state the step
+    starts from into ``sums`` (energy_sums.py)."""
     c = ctx[0]
     save_state(B, c.n, X, Q, Vel, W)
     guard_sums(B, S, c.n, c.ns, c.gx, c.gy, sums)
-    update_geometry(B, F, V, c.n, nf, c.dt, c.spec)
+    update_geometry(B, F, V, c.n, nf, c.dt, c.spec, full)
 
 
 @kernel(entry=True)
@@ -55,7 +56,7 @@ def end_step(ctx, B, S, bad, why, Ca, Cb, nc, cluster, sums, key, npts, depth, j
 def begin_step_flat(ctx, BF, BI, FF, FI, ghost, wghost, VF, VI, nf, X, Q, Vel, W, SF, SI, sums):
     """``begin_step`` over the tables' flat arrays."""
     begin_step(ctx, bodies_view(BF, BI), fixtures_view(FF, FI, ghost, wghost), verts_view(VF, VI), nf,
-               X, Q, Vel, W, springs_view(SF, SI), sums)
+               X, Q, Vel, W, springs_view(SF, SI), sums, True)
 
 
 @kernel(entry=True, runtime=True)

@@ -50,6 +50,7 @@ from .soft_driver import (
     S_SLEEP,
     S_STEP,
     S_SWEEP,
+    S_GEOM,
     soft_world_step,
 )
 
@@ -156,6 +157,7 @@ class OneCall:
         self._keys = (tr.keys, tr._keys2)
         swept = broadphase.resolve(world.broadphase, s.fixtures.n) == "sweep"
         S[S_SWEEP] = swept
+        S[S_GEOM] = 1  # a new pack follows an edit: every fixture's geometry is computed once
         self.sweep = self._sweep(s.fixtures.n if swept else 0, len(pl._pairs) if swept else 0)
         values = (pl.ctx.array, pl.params(world).array, S, self.D, self.T, guard.G,
             *s.bodies.arrays.flat, *s.fixtures.arrays.flat, *s.verts.arrays.flat,
@@ -269,6 +271,7 @@ class OneCall:
         self._h = par.get("h")
         self._dt, self._version = dt, par.version
         self.S[S_SLEEP] = world.sleeping
+        self.S[S_GEOM] = 1  # the step length or the speculative distance may have changed the boxes
         self.D[D_GROWTH] = world.energy_guard
         self.D[D_GMAG] = math.hypot(world._gravity[0], world._gravity[1])
 

@@ -34,10 +34,11 @@ from .pack import call_with_fields
 #: P.S slots: counts (bodies, fixtures, springs, joints), the step number, contact rows, which
 #: contact table and which touching set is current, the last touching count, the broad phase's
 #: pairs and their limit, sleeping on, awake bodies, joints broken, the size a grow code asks
-#: for, the touching merge's counts, the non-finite count
+#: for, the touching merge's counts, the non-finite count, the sweep's choice, and whether the
+#: next step computes every fixture's geometry (set by Python after an edit or a settings change)
 (S_N, S_NF, S_NS, S_NJ, S_STEP, S_NC, S_CPAR, S_EPAR, S_NTOUCH, S_NPAIRS, S_LIMIT, S_SLEEP, S_NAWAKE,
- S_BROKEN, S_NEED, S_NT, S_NB, S_NA, S_KBAD, S_SWEEP) = range(20)
-S_SLOTS = 20
+ S_BROKEN, S_NEED, S_NT, S_NB, S_NA, S_KBAD, S_SWEEP, S_GEOM) = range(21)
+S_SLOTS = 21
 #: P.D slots: the guard's growth r, |g|, the contact and joint impulses' adopt factors
 D_GROWTH, D_GMAG, D_CADOPT, D_JADOPT = range(4)
 D_SLOTS = 4
@@ -127,7 +128,8 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     Vt = make_table("verts", (VF,))
     Sp = make_table("springs", (SF, SI))
     J = optional_joints(JF, JI)
-    begin_step(ctx, B, F, Vt, nf, X, Q, V, W, Sp, start)
+    begin_step(ctx, B, F, Vt, nf, X, Q, V, W, Sp, start, S[S_GEOM] != 0)
+    S[S_GEOM] = 0  # static and sleeping bodies keep their geometry until Python says otherwise
     p_start, dragged = _motors(J, B, nj)
     guard_begin(G, start, D[D_GROWTH], p_start, dragged)
     if not _joints_ready(J, B, nj, kinds):
