@@ -131,6 +131,35 @@ def minimum_degree(joints, adj, budget):
     return order
 
 
+#: elimination orders by a component's shape (``_shape``), in its own numbering: a scene made of
+#: many copies of one rig (a rain of ragdolls) orders the rig once, not at every rebuild
+_ORDERS: dict = {}
+_ORDERS_MAX = 4096
+
+
+def _shape(comp, moving):
+    """A component's joints as the local numbers of the bodies they move (numbered as first met):
+    equal shapes have equal joint graphs under the numbering that keeps the joints' order."""
+    local = {}
+    return tuple(tuple(local.setdefault(c, len(local)) for c, _ in moving[j]) for j in comp)
+
+
+def _elimination(comp, moving):
+    """``minimum_degree`` of one component (``comp`` in ascending joint order), remembered by its
+    shape: minimum degree breaks ties by the lower joint, and numbering the joints 0..k-1 in
+    ascending order keeps every comparison, so the order found once serves every copy."""
+    key = _shape(comp, moving)
+    local = _ORDERS.get(key, False)
+    if local is False:
+        index = list(range(len(comp)))
+        adj = _adjacency(index, {i: [(c, 0) for c in ends] for i, ends in enumerate(key)})
+        local = minimum_degree(index, adj, FILL_BUDGET * len(comp) + FILL_SLACK)
+        if len(_ORDERS) >= _ORDERS_MAX:
+            _ORDERS.clear()
+        _ORDERS[key] = local
+    return None if local is None else [comp[i] for i in local]
+
+
 def build(J, nj: int, kinds: np.ndarray, jcap: int):
     """(JointSystem, seq): the global system for the joints, and which joints stay out of it
     (SEQUENTIAL, BLOCK)."""
@@ -144,8 +173,7 @@ def build(J, nj: int, kinds: np.ndarray, jcap: int):
         if len(comp) == 1 and LONE_AS_BLOCK[0]:
             seq[comp] = BLOCK
             continue
-        adj = _adjacency(comp, moving)
-        elim = minimum_degree(comp, adj, FILL_BUDGET * len(comp) + FILL_SLACK) if len(comp) > 1 else comp
+        elim = _elimination(comp, moving) if len(comp) > 1 else comp
         if elim is None:
             seq[comp] = SEQUENTIAL
             continue
