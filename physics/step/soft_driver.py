@@ -17,8 +17,9 @@ import numpy as np
 
 from .._jit import kernel
 from ..collision.broadphase.brute import brute_pairs
-from ..collision.broadphase.sweep import sweep_pairs
-from ..collision.broadphase.fixture_filter import filter_pairs
+from ..collision.broadphase.order import sort_pairs as sort_slot_pairs
+from ..collision.broadphase.sweep import sweep_emit
+from ..collision.broadphase.fixture_filter import filter_reachable
 from ..collision.narrowphase.kernel import collide_with, sort_pairs
 from ..constraints.joints.kinds import kinds_changed_in
 from ..solvers.soft_step.kernel import soft_step
@@ -58,13 +59,26 @@ def _motors(J, B, nj):
 
 @kernel
 def _broad_phase(F, nf, pairs, swept, sweep):
-    """The fixtures' overlapping pairs: brute force, or (``swept``) the sweep with the world's
-    scratch, whose ``tmp`` is as long as ``pairs``, so a count that fits one fits both.  A runtime
-    choice, not an optional argument: both worlds then step with one compiled driver."""
+    """The count of the fixtures' overlapping pairs: brute force, sorted into ``pairs``, or
+    (``swept``) the sweep with the world's scratch, unsorted into its ``tmp``, which is as long
+    as ``pairs``, so a count that fits one fits both.  A runtime choice, not an optional
+    argument: both worlds then step with one compiled driver."""
     if not swept:
         return brute_pairs(F, nf, pairs)
     state, order, key, b0, b1, bstart, ent, tmp, head = sweep
-    return sweep_pairs(F, nf, state, order, key, b0, b1, bstart, ent, tmp, head, pairs)
+    return sweep_emit(F, nf, state, order, key, b0, b1, bstart, ent, tmp)
+
+
+@kernel
+def _kept_pairs(B, F, nf, pairs, npairs, exclude, swept, sweep, dt, spec):
+    """The pairs the filters and the bodies' reach keep (fixture_filter.filter_reachable), sorted
+    into ``pairs``: the sweep's are filtered before its sort, so dropped pairs cost no sorting."""
+    if not swept:
+        return filter_reachable(B, F, pairs, npairs, exclude, dt, spec)
+    tmp, head = sweep[7], sweep[8]
+    k = filter_reachable(B, F, tmp, npairs, exclude, dt, spec)
+    sort_slot_pairs(tmp, k, nf, head, pairs)
+    return k
 
 
 @kernel
@@ -141,7 +155,7 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
         return TOO_MANY_PAIRS
     if npairs > pairs.shape[0]:
         return GROW_PAIRS
-    npairs = filter_pairs(F, pairs, npairs, exclude)
+    npairs = _kept_pairs(B, F, nf, pairs, npairs, exclude, S[S_SWEEP] != 0, sweep, c.dt, c.spec)
     S[S_NPAIRS] = npairs
     S[S_NEED] = npairs
     if S[S_CPAR] == 0:  # this step writes table B, reading last step's rows from A

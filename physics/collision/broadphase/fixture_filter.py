@@ -14,6 +14,7 @@ import numpy as np
 
 from ..._jit import kernel
 from ...store.flat import fixtures_view
+from ..reach import may_touch
 
 
 @kernel(inline="always")
@@ -60,6 +61,24 @@ def filter_pairs(F, pairs, npairs, keys):
         i = pairs[p, 0]
         j = pairs[p, 1]
         if not may_collide(F, keys, i, j):
+            continue
+        pairs[k, 0] = i
+        pairs[k, 1] = j
+        k += 1
+    return k
+
+
+@kernel
+def filter_reachable(B, F, pairs, npairs, keys, dt, spec):
+    """``filter_pairs``, keeping only the pairs whose bodies can also meet within the step
+    (reach.may_touch, the narrow phase's first test, symmetric in the two bodies): the narrow
+    phase would drop the others unseen, so its rows are the same, and fast bodies' fat boxes
+    no longer hand it four pairs for each one it keeps."""
+    k = 0
+    for p in range(npairs):
+        i = pairs[p, 0]
+        j = pairs[p, 1]
+        if not may_collide(F, keys, i, j) or not may_touch(B, F.body[i], F.body[j], dt, spec):
             continue
         pairs[k, 0] = i
         pairs[k, 1] = j

@@ -211,6 +211,16 @@ def sweep_pairs(B, n, state, order, key, b0, b1, bstart, ent, tmp, head, pairs):
     Scratch sizes: order/key/b0/b1 n, bstart n + 2, ent 6n (the bands' entries, then each
     entry's next active one), head n + 1.
     """
+    k = sweep_emit(B, n, state, order, key, b0, b1, bstart, ent, tmp)
+    if k <= tmp.shape[0] and k <= pairs.shape[0]:
+        sort_pairs(tmp, k, n, head, pairs)
+    return k
+
+
+@kernel
+def sweep_emit(B, n, state, order, key, b0, b1, bstart, ent, tmp):
+    """``sweep_pairs``' pairs in the sweep's order into ``tmp`` (as many as fit); returns the
+    total count.  The caller may drop some before sorting what is left (order.sort_pairs)."""
     aabb = B.aabb
     axis = _pick_axis(aabb, n)
     for i in range(n):
@@ -223,7 +233,4 @@ def sweep_pairs(B, n, state, order, key, b0, b1, bstart, ent, tmp, head, pairs):
     _fill_bands(order, n, b0, b1, nb, bstart, ent)
     half = ent.shape[0] // 2
     _next_active(B, nb, bstart, ent, ent[half:])
-    k = _sweep_bands(B, nb, axis, b0, bstart, ent, ent[half:], tmp)
-    if k <= tmp.shape[0] and k <= pairs.shape[0]:
-        sort_pairs(tmp, k, n, head, pairs)
-    return k
+    return _sweep_bands(B, nb, axis, b0, bstart, ent, ent[half:], tmp)
