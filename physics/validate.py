@@ -44,6 +44,9 @@ def text(value, field: str, empty: bool = False) -> str:
 
 def is_number(value) -> bool:
     """A real number (Python or numpy int or float), not a bool, string or bytes."""
+    t = type(value)
+    if t is float or t is int:  # the common case, without the abstract-class check (bool is not int here)
+        return True
     return isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
 
 
