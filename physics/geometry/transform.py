@@ -70,7 +70,7 @@ def _clear_box(B, i):
 
 
 @kernel(entry=True)
-def update_geometry(B, F, V, n, nf, dt, spec, full=True):
+def update_geometry(B, F, V, n, nf, dt, spec, full):
     """Transform the fixtures to world space and refresh the fixtures' and bodies' AABBs.
 
     Each AABB is fattened by m_i = spec/2 + dt (|v_i| + |w_i| r_i) of its body: two boxes

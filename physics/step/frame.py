@@ -6,6 +6,8 @@ arrays per table unbox in a fraction of a namedtuple of columns' time).
 """
 from __future__ import annotations
 
+import numpy as np
+
 from .._jit import kernel
 from ..geometry.transform import update_geometry
 from ..store.flat import bodies_view, fixtures_view, springs_view, verts_view
@@ -56,7 +58,7 @@ def end_step(ctx, B, S, bad, why, Ca, Cb, nc, cluster, sums, key, npts, depth, j
 def begin_step_flat(ctx, BF, BI, FF, FI, ghost, wghost, VF, VI, nf, X, Q, Vel, W, SF, SI, sums):
     """``begin_step`` over the tables' flat arrays."""
     begin_step(ctx, bodies_view(BF, BI), fixtures_view(FF, FI, ghost, wghost), verts_view(VF, VI), nf,
-               X, Q, Vel, W, springs_view(SF, SI), sums, True)
+               X, Q, Vel, W, springs_view(SF, SI), sums, np.bool_(True))
 
 
 @kernel(entry=True, runtime=True)

@@ -72,8 +72,8 @@ def filter_pairs(F, pairs, npairs, keys):
 def filter_reachable(B, F, pairs, npairs, keys, dt, spec):
     """``filter_pairs``, keeping only the pairs whose bodies can also meet within the step
     (reach.may_touch, the narrow phase's first test, symmetric in the two bodies): the narrow
-    phase would drop the others unseen, so its rows are the same, and fast bodies' fat boxes
-    no longer hand it four pairs for each one it keeps."""
+    phase would drop the others unseen, so its rows are the same, and the many boxes a fast
+    body's fat box overlaps but cannot reach are neither sorted nor handed on."""
     k = 0
     for p in range(npairs):
         i = pairs[p, 0]

@@ -10,6 +10,8 @@ body's fat box fills its bucket with partners in sweep order, not slot order.
 """
 from __future__ import annotations
 
+import numpy as np
+
 from ..._jit import kernel
 
 
@@ -36,8 +38,8 @@ def sort_pairs(tmp, count, n, head, pairs):
 
     ``head`` is int32 scratch of at least n + 1 entries.
     """
-    _count_by(tmp, count, n, head, 1, pairs)
-    _count_by(pairs, count, n, head, 0, tmp)
+    _count_by(tmp, count, n, head, np.int64(1), pairs)  # not literals: _count_by compiles once
+    _count_by(pairs, count, n, head, np.int64(0), tmp)
     for k in range(count):
         pairs[k, 0] = tmp[k, 0]
         pairs[k, 1] = tmp[k, 1]
