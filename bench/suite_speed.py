@@ -29,7 +29,7 @@ from .paths import RESULTS
 from .report.suite_table import B1, B2, OURS, PM, table_md
 from .suite import NEEDS, SUITE
 from .suite.common import strip_box2d
-from .suite.scripts import Scripted, sleep_threshold, starts_asleep
+from .suite.scripts import Scripted, sleep_threshold
 from .timing import chunk_ratio, interleaved, median_ms
 
 def _ours(desc):
@@ -53,12 +53,10 @@ def _ours(desc):
 
 
 def _pymunk(desc):
-    """pymunk's adapter, refusing a scene with a script or sleeping bodies: it would time another scene."""
+    """pymunk's adapter, refusing a scene with a script: it would time another scene."""
     bench = desc.get("bench", {})
     if bench.get("events") or bench.get("drives"):
         raise NotImplementedError("the pymunk adapter does not run bench.events / bench.drives")
-    if starts_asleep(desc):
-        raise NotImplementedError("the pymunk adapter cannot create bodies asleep (awake = false)")
     return build("pymunk", desc)
 
 

@@ -12,7 +12,7 @@ from bench.suite import LACKS, NEEDS, SUITE
 from bench.suite.benchmarks import joint_grid, junkyard, large_pyramid, smash
 from bench.suite.common import body, box, scene
 from bench.suite.ragdoll import rain
-from bench.suite_speed import _ours, run_scene
+from bench.suite_speed import _ours, _pymunk, run_scene
 from physics.scene import scene_from_dict
 from physics.errors import SceneError
 from box2d_ref import box2d_v3
@@ -62,6 +62,16 @@ def test_smash_wall_is_created_asleep_on_our_side_and_the_ram_moves():
     assert len({b._B.island[b._s] for b in wall}) == len(wall)  # each its own island, as in Box2D
     sim.step()
     assert ram.awake and ram.velocity == (40.0, 0.0) and not any(b.awake for b in wall)
+
+
+def test_pymunk_creates_smash_wall_asleep_and_the_ram_wakes_it():
+    pytest.importorskip("pymunk")  # a bench extra (.ci/run installs it)
+    sim = _pymunk(smash(columns=4, rows=3))
+    ram, wall = sim.bodies[0], sim.bodies[1:]
+    assert not ram.is_sleeping and all(b.is_sleeping for b in wall)
+    for _ in range(90):  # 45 m to go at 40 m/s: the impact comes at about step 69
+        sim.step()
+    assert not any(b.is_sleeping for b in wall) and wall[0].position.x > 30.0
 
 
 def test_every_suite_scene_says_how_it_differs():

@@ -28,7 +28,8 @@ PYMUNK_ITERATIONS = 10
 
 class PymunkSim(Sim):
     """pymunk running a description: ``iterations`` solver iterations (default 10, pymunk's own),
-    other Chipmunk parameters at their defaults, sleeping off."""
+    other Chipmunk parameters at their defaults, sleeping off (on only where the description
+    creates bodies asleep)."""
 
     engine = "pymunk"
     settings_label = f"iterations {PYMUNK_ITERATIONS}"
@@ -81,6 +82,18 @@ class PymunkSim(Sim):
                 rest = (pa - pb).length
             sp.add(pymunk.DampedSpring(ba, bb, la, lbb, float(rest), k, c))
         add_joints(pymunk, sp, self.bodies, desc)  # the joint scenes' (bench/engines/pymunk_joints.py)
+        self._create_asleep(sp, desc)
+
+    def _create_asleep(self, sp, desc):
+        """Bodies the description creates asleep (``awake: false``; smash's wall) go to sleep each
+        alone (Chipmunk's ``cpBodySleep``), with sleeping on at the 0.5 s both other engines use:
+        pymunk then wakes them on contact as they do."""
+        asleep = [b for b, d in zip(self.bodies, desc["bodies"]) if d.get("kind", "dynamic") == "dynamic"
+                  and not d.get("box2d", {}).get("awake", d.get("awake", True))]
+        if asleep:
+            sp.sleep_time_threshold = 0.5
+            for b in asleep:
+                b.sleep()
 
     def step(self):
         """One ``space.step(dt)``."""

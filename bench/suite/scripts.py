@@ -38,12 +38,6 @@ def sleep_threshold(desc):
     return got.pop() if len(got) == 1 and None not in got else None
 
 
-def starts_asleep(desc) -> bool:
-    """Whether some body of ``desc`` is created asleep (the format's ``awake: false``, or Box2D's
-    ``box2d.awake = false``)."""
-    return any(not b.get("box2d", {}).get("awake", b.get("awake", True)) for b in desc["bodies"])
-
-
 class Scripted:
     """``sim`` (an OursSim) with the description's ``bench.events`` and ``bench.drives`` applied
     before the step they name; ``step`` counts from 0 as Box2D's side does."""
