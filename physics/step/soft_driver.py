@@ -75,7 +75,7 @@ def _kept_pairs(B, F, nf, pairs, npairs, exclude, swept, sweep, dt, spec):
     into ``pairs``: the sweep's are filtered before its sort, so dropped pairs cost no sorting."""
     if not swept:
         return filter_reachable(B, F, pairs, npairs, exclude, dt, spec)
-    tmp, head = sweep[7], sweep[8]
+    _, _, _, _, _, _, _, tmp, head = sweep
     k = filter_reachable(B, F, tmp, npairs, exclude, dt, spec)
     sort_slot_pairs(tmp, k, nf, head, pairs)
     return k
