@@ -62,6 +62,20 @@ SCENES = {
 }
 
 
+def _coloured(make):
+    """``make``'s world in soft_step's coloured layout (the driver's ``wide`` scratch)."""
+    def build():
+        w = make()
+        w.settings["solver_layout"] = "coloured"
+        return w
+    return build
+
+
+# the coloured layout through the driver: contacts only, growing blocks (pile40), springs and every
+# shape (default), restitution (cradle5: its rows handed to restitution and back), rounded shapes
+SCENES.update({f"{k}_coloured": _coloured(SCENES[k]) for k in ("pile40", "default", "cradle5", "rounded")})
+
+
 def _run(make, driver: bool, steps: int, edit=None):
     """``steps`` steps of a new world through the driver or the pipeline; the number of contact
     begin events seen on the way is kept as ``w.begins``."""
@@ -117,6 +131,18 @@ def test_driver_grows_what_it_found_short():
     w = _run(_pile, True, 3)
     assert w._pipeline.npairs > 256 and w._store.contacts.n > 256
     assert w._store.contacts.capacity >= w._store.contacts.n
+
+
+def test_driver_grows_the_coloured_blocks():
+    """The pile starts with every box touching many others: colours run out, each overflow
+    manifold takes a block of its own, and the blocks outgrow their first size (64 blocks)."""
+    w = _coloured(_pile)()
+    first = len(w._mode.coloured.GA)
+    _run(lambda: w, True, 3)
+    oc = w._pipeline.one_call
+    assert oc.P is not None and oc.wide is not None, "the driver did not run the coloured world"
+    assert len(w._mode.coloured.GA) > first
+    assert oc.wide[5] is w._mode.coloured.GA  # the pack holds the grown blocks
 
 
 def test_driver_switches_to_the_whole_narrow_phase():

@@ -3,8 +3,10 @@
 ``OneCall.step`` packs the world's arrays (pack.py) once per change of structure, calls the
 driver once per step and does in Python only what compiled code cannot: grow an array and call
 again, raise a refused step, run the user's callbacks.  The Python work per step does not grow
-with the scene.  A world the driver does not cover (another mode, the coloured layout, sensors,
-a user pair filter, the quadtree broad phase) steps through the pipeline's stages.
+with the scene.  A world the driver does not cover (another mode, sensors, a user pair filter,
+the quadtree broad phase) steps through the pipeline's stages.  Both of soft_step's layouts
+step in the driver: the coloured one's scratch is the pack's ``wide`` (None for rows, so the
+driver compiled for a rows world holds no coloured code, and the other way round).
 """
 from __future__ import annotations
 
@@ -55,6 +57,7 @@ from .soft_driver import (
 )
 
 _ROWS = LAYOUTS.index("rows")
+_COLOURED = LAYOUTS.index("coloured")
 _BROAD = ("brute", "sweep")  # the broad phases the driver runs (the quadtree steps through the pipeline)
 _NO_LINKS = np.zeros((0, 3), np.int64)
 
@@ -90,6 +93,7 @@ class OneCall:
         self._scratch = None  # the narrow phase's manifold scratch
         self._V0 = None  # soft_step's start-velocity scratch
         self.sweep = None  # the sweep broad phase's scratch in the pack (empty: brute force)
+        self.wide = None  # the coloured layout's scratch in the pack (None: the rows layout)
         self._dt = None  # the step length and the mode's settings version the slots were set for
         self._version = None
         self._h = 0.0  # the sub-step the impulses are carried at
@@ -102,7 +106,7 @@ class OneCall:
     @staticmethod
     def usable(world, pl, par) -> bool:
         """Whether the driver covers this world as it is now."""
-        return (world._mode.name == "soft_step" and par.get("solver_layout") == _ROWS
+        return (world._mode.name == "soft_step" and par.get("solver_layout") in (_ROWS, _COLOURED)
                 and world._pair_filter is None and world._n_sensors == 0 and not pl.events.sensors.active
                 and broadphase.resolve(world.broadphase, world._store.fixtures.n) in _BROAD)
 
@@ -129,10 +133,14 @@ class OneCall:
         c = s.contacts
         ck, tr, isl, guard = pl._checkpoint, pl.events.contacts, pl._islands, pl._guard
         ck.ensure(n)
-        if n + 1 > len(mode.SB):  # one more row: the world, for joints
+        if n + 2 > len(mode.SB):  # two more rows: the world, for joints; the padding lanes' (coloured)
             mode._alloc(2 * n + 2)
         if c.capacity > len(mode.R):
             mode.R = np.zeros((c.capacity, mode.R.shape[1]))
+        self.wide = wide = None
+        if pl.params(world).get("solver_layout") == _COLOURED:
+            mode.coloured.ensure(s, c.capacity)  # the driver asks for more room when it needs it
+            self.wide = wide = mode.coloured.pack_fields()
         tr.scratch(c.capacity)
         if n > len(isl.parent):
             isl.parent = np.zeros(2 * n, dtype=np.int64)
@@ -167,7 +175,7 @@ class OneCall:
             tr.keys, tr._keys2, tr.begin, tr._begin2, tr._absent, tr._absent2,
             isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, self._v0(len(mode.SB)),
             JF, JI, JW, JS, kinds, s.springs.arrays.flat[0] if s.springs.n else None,
-            1 if c.full else None, self.sweep)
+            1 if c.full else None, self.sweep, wide)
         self._waiting = None
         if not (_ON_DEMAND[0] or now):
             sig = pack_signature(values)
@@ -292,6 +300,8 @@ class OneCall:
             s.contacts.full = True
         elif code == drv.JOINT_KINDS:
             joint_work(s)._key = None  # the system is rebuilt for the bodies' new kinds
+        elif code == drv.GROW_BLOCKS:
+            world._mode.coloured.grow(need)
         self.build(world, pl, now=True)
         self._par = pl.params(world)
         self.key = self._key(world, pl)

@@ -49,6 +49,9 @@ FIELDS = (
     # the sweep broad phase's scratch (broadphase/sweep.py: sweep_pairs' arrays from ``state`` to
     # ``head``, the world's own, so its kept order is this world's; empty under brute force)
     "sweep",
+    # the coloured layout's scratch (solvers/soft_step/layout.py: ColouredScratch.pack_fields), None
+    # in the rows layout
+    "wide",
 )
 
 

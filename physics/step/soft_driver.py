@@ -22,6 +22,8 @@ from ..collision.broadphase.sweep import sweep_emit
 from ..collision.broadphase.fixture_filter import filter_reachable
 from ..collision.narrowphase.kernel import collide_with, sort_pairs
 from ..constraints.joints.kinds import kinds_changed_in
+from ..constraints.colouring import COLOURS, LANES, colour_contacts
+from ..solvers.soft_step.coloured import soft_step_wide
 from ..solvers.soft_step.kernel import soft_step
 from ..store.optional import optional_joints, optional_springs
 from ..store.table_type import make_table
@@ -44,7 +46,7 @@ S_SLOTS = 21
 D_GROWTH, D_GMAG, D_CADOPT, D_JADOPT = range(4)
 D_SLOTS = 4
 #: return codes
-OK, GROW_PAIRS, TOO_MANY_PAIRS, GROW_ROWS, NEED_FULL, JOINT_KINDS, NONFINITE, GAINED = range(8)
+OK, GROW_PAIRS, TOO_MANY_PAIRS, GROW_ROWS, NEED_FULL, JOINT_KINDS, GROW_BLOCKS, NONFINITE, GAINED = range(9)
 #: P.T: cycle stamps at the start and after each of the profile's six stages
 T_SLOTS = 7
 
@@ -108,6 +110,30 @@ def _links(J, nj, out):
 
 
 @kernel
+def _colour(B, C, n, nc, wide):
+    """The slots the coloured layout's blocks need this step (colouring.colour_contacts, into
+    ``wide``'s scratch), minus that when the blocks are shorter; 0 for the rows layout (``wide``
+    None)."""
+    if wide is None:
+        return 0
+    used, order, bstart, overflow, _, GA, _ = wide
+    slots = colour_contacts(C.a, C.b, nc, B.inv_m, B.inv_i, n, used, C.colour, order, bstart, overflow[0])
+    return slots if slots <= GA.shape[0] else -slots
+
+
+@kernel
+def _solve(ctx, par, B, C, Sp, R, SB, J, JW, JS, V0, wide):
+    """The soft step in the world's layout: rows (``wide`` None) or coloured (soft_step_wide over
+    the colouring ``_colour`` left in ``wide``: its blocks end at ``bstart[COLOURS]``); the number
+    of joints that broke."""
+    if wide is None:
+        return soft_step(ctx, par, B, C, Sp, R, SB, J, JW, JS, V0)
+    _, order, bstart, _, W, GA, GB = wide
+    slots = bstart[COLOURS] * LANES
+    return soft_step_wide(ctx, par, B, C, Sp, R, SB, J, JW, JS, order, bstart, slots, W, GA, GB)
+
+
+@kernel
 def _scale_impulses(C, nc, r):
     """ContactBuffer.adopt: the carried impulses times ``r``."""
     if r != 1.0:
@@ -128,7 +154,7 @@ def soft_world_step(P):
 @kernel
 def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, CAF, CAI, CApt, CBF, CBI, CBpt,
            pairs, exclude, pkeys, porder, mscratch, X, Q, V, W, bad, why, cluster, start, end, EK0, EK1, EB0, EB1,
-           EA0, EA1, parent, min_t, label, links, R, SB, V0, JF, JI, JW, JS, kinds, SS, full, sweep):
+           EA0, EA1, parent, min_t, label, links, R, SB, V0, JF, JI, JW, JS, kinds, SS, full, sweep, wide):
     """The step over the pack's arrays (pack.FIELDS, in order): the stages of the module doc."""
     T[0] = cycles()
     c = ctx[0]
@@ -173,6 +199,10 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
         nc = collide_with(ctx, B, F, Vt, pairs, npairs, C, Cp, S[S_NC], full, pkeys, porder, mscratch)
         if nc < 0:
             return NEED_FULL
+    short = _colour(B, C, c.n, nc, wide)  # before the swap: a grow of the blocks calls again
+    if short < 0:
+        S[S_NEED] = -short
+        return GROW_BLOCKS
     # the rows are final: the tables' roles swap (Python mirrors it: ContactBuffer.swap)
     S[S_CPAR] = 1 - S[S_CPAR]
     S[S_NC] = nc
@@ -180,7 +210,7 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     T[3] = cycles()
     _scale_impulses(C, nc, D[D_CADOPT])
     _scale_joint_impulses(J, nj, D[D_JADOPT])
-    S[S_BROKEN] = soft_step(ctx, par, B, C, optional_springs(SS, SI), R, SB, J, JW, JS, V0)
+    S[S_BROKEN] = _solve(ctx, par, B, C, optional_springs(SS, SI), R, SB, J, JW, JS, V0, wide)
     T[4] = cycles()
     if S[S_SLEEP]:
         S[S_NAWAKE] = update_islands(ctx, B, C, Sp, links[:_links(J, nj, links)], parent, min_t, label)

@@ -41,11 +41,20 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
     needed when GA is too short (nothing changed: call again with larger
     blocks; sized here, the colouring costs no extra call from Python)."""
     c = ctx[0]
-    p = par[0]
-    n = c.n
-    slots = colour_contacts(C.a, C.b, c.nc, B.inv_m, B.inv_i, n, used, C.colour, order, bstart, force_overflow)
+    slots = colour_contacts(C.a, C.b, c.nc, B.inv_m, B.inv_i, c.n, used, C.colour, order, bstart, force_overflow)
     if slots > len(GA):
         return -slots
+    return soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W, GA, GB)
+
+
+@kernel(runtime=True)
+def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W, GA, GB):
+    """soft_step_coloured's step once the manifolds are coloured into ``slots`` slots (``order``,
+    ``bstart``) and the blocks hold them: the one-call driver colours before the contact tables
+    swap, so that a grow of the blocks can still call again."""
+    c = ctx[0]
+    p = par[0]
+    n = c.n
     h = p.h
     broken = 0
     if not p.warm_starting:
@@ -82,7 +91,7 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
             coloured_pass(solve, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
             if J is not None:
                 solve_joints(c, B, J, JW, JS, np.bool_(True), p.inv_h, eq_global)
-        if c.ns > 0:  # last before the move, as kernel.py
+        if S is not None and c.ns > 0:  # last before the move, as kernel.py (S None: no springs)
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)

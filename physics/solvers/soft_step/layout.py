@@ -18,7 +18,9 @@ LAYOUTS = ("rows", "coloured")
 
 class ColouredScratch:
     def __init__(self):
-        self.force_overflow = False  # every manifold alone in its block: the row solve's order (tests)
+        # every manifold alone in its block: the row solve's order (tests); an array, so that the
+        # one-call driver's pack sees a change made after it was built
+        self.overflow = np.zeros(1, np.bool_)
         self.used = np.zeros(64, np.uint64)
         self.order = np.zeros(64 * LANES, np.int32)
         self.bstart = np.zeros(COLOURS + 1, np.int64)
@@ -29,10 +31,20 @@ class ColouredScratch:
         self.GA = np.zeros(slots, np.uint64)
         self.GB = np.zeros(slots, np.uint64)
 
-    def ensure(self, store) -> None:
-        """The colouring's scratch large enough for this step's bodies and manifolds."""
+    @property
+    def force_overflow(self) -> bool:
+        return bool(self.overflow[0])
+
+    @force_overflow.setter
+    def force_overflow(self, on) -> None:
+        self.overflow[0] = bool(on)
+
+    def ensure(self, store, rows: int | None = None) -> None:
+        """The colouring's scratch large enough for this step's bodies and ``rows`` manifolds (the
+        contact table's count; the one-call driver passes its capacity, which bounds every step
+        until the pack is rebuilt)."""
         n = store.bodies.n
-        nc = store.contacts.n
+        nc = store.contacts.n if rows is None else rows
         if n > len(self.used):
             self.used = np.zeros(2 * n, np.uint64)
         # at most one block per manifold (overflow) plus one partial block per colour
@@ -40,13 +52,21 @@ class ColouredScratch:
         if need > len(self.order):
             self.order = np.zeros(2 * need, np.int32)
 
+    def grow(self, slots: int) -> None:
+        """Blocks for at least ``slots`` slots (doubling)."""
+        self._wide(2 * slots)
+
+    def pack_fields(self) -> tuple:
+        """The scratch the one-call driver's pack holds (step/soft_driver.py: ``wide``)."""
+        return self.used, self.order, self.bstart, self.overflow, self.W, self.GA, self.GB
+
     def step(self, ctx, par, store, R, SB, J, JW, JS) -> int:
         """The step kernel (it colours first); the number of joints that broke."""
         self.ensure(store)
         while True:
             out = soft_step_coloured(ctx.array, par.array, store.bodies.view, store.contacts.cur,
                                      store.springs.view, R, SB, J, JW, JS, self.used, self.order,
-                                     self.bstart, self.force_overflow, self.W, self.GA, self.GB)
+                                     self.bstart, self.overflow[0], self.W, self.GA, self.GB)
             if out >= 0:
                 return out
-            self._wide(2 * -out)  # more slots than the blocks hold: nothing was done yet
+            self.grow(-out)  # more slots than the blocks hold: nothing was done yet
