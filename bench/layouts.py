@@ -1,9 +1,10 @@
 """soft_step's two contact layouts timed against each other, interleaved (issue 17).
 
-    python -m bench.layouts pyramid20 rain1000 large_pyramid
+    python -m bench.layouts pyramid20 rain1000 large_pyramid suite:washer suite:many_pyramids
 
 For each scene: one world per ``solver_layout`` ("rows", "coloured") on the identical scene
-(bench/scenes.py; ``large_pyramid`` is Box2D v3's benchmark pyramid, base 100, 5,050 boxes),
+(bench/scenes.py; ``large_pyramid`` is Box2D v3's benchmark pyramid, base 100, 5,050 boxes;
+``suite:NAME`` a scene of Box2D v3's benchmark suite, built and scripted as bench.suite_speed does),
 warmed up, then chunks of steps alternating rows, coloured, coloured, rows, ...  Reported: the
 median ms/step of each, wall clock and process CPU time (the CPU time leaves out the time the
 process waited for a core: the machine may be shared), and the median of the per-chunk ratios
@@ -30,13 +31,28 @@ def scene(key) -> dict:
     return scene_data(key).desc
 
 
+def _build(key):
+    """Something to ``step()`` and its ``world``: a bench world, or a suite scene's simulation."""
+    if key.startswith("suite:"):
+        from .suite import SUITE
+        from .suite_speed import _ours
+        return _ours(SUITE[key[len("suite:"):]]())
+    return _Plain(build_ours_world(scene(key)))
+
+
+class _Plain:
+    """A bench world as the suite's simulations look: ``step()`` and ``world``."""
+
+    def __init__(self, world):
+        self.world, self.step = world, world.step
+
+
 def measure(key, chunk, warm, rounds) -> dict:
     """{layout: (wall ms/step, cpu ms/step)} and the ratios, medians over the rounds."""
-    desc = scene(key)
     worlds = {}
     for name in LAYOUTS:
-        w = worlds[name] = build_ours_world(desc)
-        w.settings["solver_layout"] = name
+        w = worlds[name] = _build(key)
+        w.world.settings["solver_layout"] = name
         for _ in range(warm):
             w.step()
     wall = {n: [] for n in LAYOUTS}
@@ -57,7 +73,7 @@ def measure(key, chunk, warm, rounds) -> dict:
 
 def main(argv=None) -> int:
     for key in (argv if argv is not None else sys.argv[1:]) or list(PLAN):
-        chunk, warm, rounds = PLAN.get(key, (20, 60, 21))
+        chunk, warm, rounds = PLAN.get(key, (6, 60, 9) if key.startswith("suite:") else (20, 60, 21))
         m = measure(key, chunk, warm, rounds)
         print(f"{key}: rows {m['wall']['rows']:.3f} ms/step ({m['cpu']['rows']:.3f} cpu), coloured "
               f"{m['wall']['coloured']:.3f} ({m['cpu']['coloured']:.3f} cpu); coloured / rows "

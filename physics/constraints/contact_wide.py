@@ -35,12 +35,6 @@ BLOCK_SIZE = NW * LANES  # floats per block
 
 
 
-def wide_arrays(slots: int, dtype=np.float64):
-    """(W, GA, GB) for ``slots`` slots (a multiple of LANES)."""
-    return (np.zeros(slots // LANES * BLOCK_SIZE, dtype), np.zeros(slots, np.uint64),
-            np.zeros(slots, np.uint64))
-
-
 @kernel(inline="always")
 def _at(j, f):
     """Index of field f of slot j (j >= 0: unsigned arithmetic, no floor-division fix-ups)."""

@@ -4,6 +4,12 @@ Each step, after the narrow phase, the step kernel (coloured.py) first colours t
 (constraints/colouring.py; the colours live in the contact table, carried from step to step);
 when they need more slots than the blocks hold it returns before changing anything, and the
 blocks grow (doubling) for a second call.  Scratch is reused.
+
+The blocks are float32, as Box2D v3's (b2FloatW): a pass streams every block once, and at
+float64 a large pile's blocks outgrow the cache (suite washer and large_pyramid 11-12 % faster
+a step in float32, docs/benchmarks.md).  The arithmetic stays in float64 where a body's state
+enters it.  The test switch that puts every manifold in a block of its own keeps float64 blocks:
+that order reproduces the row solve bit for bit (tests/test_coloured_solve.py).
 """
 from __future__ import annotations
 
@@ -11,6 +17,7 @@ import numpy as np
 
 from ...constraints.colouring import COLOURS, LANES
 from ...constraints.contact_wide import BLOCK_SIZE
+from ...store.table import GENERATION
 from .coloured import soft_step_coloured
 
 LAYOUTS = ("rows", "coloured")
@@ -27,7 +34,7 @@ class ColouredScratch:
         self._wide(64 * LANES)
 
     def _wide(self, slots: int) -> None:
-        self.W = np.zeros(slots // LANES * BLOCK_SIZE)
+        self.W = np.zeros(slots // LANES * BLOCK_SIZE, np.float64 if self.overflow[0] else np.float32)
         self.GA = np.zeros(slots, np.uint64)
         self.GB = np.zeros(slots, np.uint64)
 
@@ -37,7 +44,10 @@ class ColouredScratch:
 
     @force_overflow.setter
     def force_overflow(self, on) -> None:
-        self.overflow[0] = bool(on)
+        if bool(on) != self.overflow[0]:
+            self.overflow[0] = bool(on)
+            self._wide(len(self.GA))  # the blocks in the order's precision (module doc)
+            GENERATION[0] += 1  # a replaced array: the one-call step packs the new blocks
 
     def ensure(self, store, rows: int | None = None) -> None:
         """The colouring's scratch large enough for this step's bodies and ``rows`` manifolds (the
