@@ -15,6 +15,7 @@ import pytest
 import physics
 from physics.scene import scene_from_dict
 from bench.small_descs import small
+from physics.constraints.colouring import LANES
 from physics.step.soft_driver import S_SWEEP
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -67,6 +68,7 @@ def _coloured(make):
     def build():
         w = make()
         w.settings["solver_layout"] = "coloured"
+        w._mode.coloured.force_overflow = False  # (the mode's scratch is the process's: a test may have set it)
         return w
     return build
 
@@ -134,9 +136,11 @@ def test_driver_grows_what_it_found_short():
 
 
 def test_driver_grows_the_coloured_blocks():
-    """The pile starts with every box touching many others: colours run out, each overflow
-    manifold takes a block of its own, and the blocks outgrow their first size (64 blocks)."""
+    """The pile starts with every box touching many others: colours run out and each overflow
+    manifold takes a block of its own.  The blocks (the mode's, shared by the process's worlds)
+    start at one block here, so the driver finds them short and they grow."""
     w = _coloured(_pile)()
+    w._mode.coloured._wide(LANES)
     first = len(w._mode.coloured.GA)
     _run(lambda: w, True, 3)
     oc = w._pipeline.one_call

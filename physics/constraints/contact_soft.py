@@ -70,6 +70,51 @@ DEEPD = K11 + 12  # this manifold's deep-overlap depth (m): DEEP x the smaller m
 NF = K11 + 13
 
 
+@kernel(inline="always")
+def prepared_point(C, k, q, xax, xay, xbx, xby, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed):
+    """Point q of manifold k at the start of the step: (r_a x n, r_b x n, r_a . n, r_b . n, normal
+    mass, tangent mass, separation, normal speed, friction coefficient); the module doc's terms."""
+    rax = C.point[k, q, 0] - xax
+    ray = C.point[k, q, 1] - xay
+    rbx = C.point[k, q, 0] - xbx
+    rby = C.point[k, q, 1] - xby
+    rna = rax * ny - ray * nx
+    rnb = rbx * ny - rby * nx
+    rta = rax * nx + ray * ny
+    rtb = rbx * nx + rby * ny
+    kn = ima + imb + iia * rna * rna + iib * rnb * rnb
+    kt = ima + imb + iia * rta * rta + iib * rtb * rtb
+    vt = dvtx + wb * rtb - wa * rta
+    # Coulomb (seed eq. 23): static coefficient while sticking, dynamic once sliding
+    mu = C.mu_s[k] if abs(vt) <= stick_speed else C.mu_d[k]
+    return (rna, rnb, rta, rtb, 1.0 / kn if kn > 0.0 else 0.0, 1.0 / kt if kt > 0.0 else 0.0, -C.depth[k, q],
+            dvnx + wb * rnb - wa * rna, mu)
+
+
+@kernel(inline="always")
+def prepared_softness(p, B, C, k, a, b, ima, imb, g):
+    """(rigid, bias rate, mass scale, impulse scale, deep-overlap depth) of manifold k
+    (constraints/contact_stiffness.py, softness.py)."""
+    rigid = ima == 0.0 or imb == 0.0
+    load = 0.0
+    for q in range(C.count[k]):
+        load += C.jn[k, q]
+    hz = contact_hertz(p.hertz_static if rigid else p.hertz_dyn, load, ima, imb, B.bound_r[a], B.bound_r[b], p.h, g)
+    rate, mscale, iscale = softness(hz, p.damping_ratio, p.h)
+    return rigid, rate, mscale, iscale, DEEP * moving_size(ima, imb, B.bound_r[a], B.bound_r[b])
+
+
+@kernel(inline="always")
+def prepared_block(ima, imb, iia, iib, ra0, rb0, ra1, rb1):
+    """(k11, k22, k12, well conditioned, 1 / det K) of a two-point manifold (constraints/block.py)."""
+    im = ima + imb
+    k11 = im + iia * ra0 * ra0 + iib * rb0 * rb0
+    k22 = im + iia * ra1 * ra1 + iib * rb1 * rb1
+    k12 = im + iia * ra0 * ra1 + iib * rb0 * rb1
+    ok, inv_det = block_mass(k11, k12, k22)
+    return k11, k22, k12, ok, inv_det
+
+
 @kernel
 def prepare_contacts(c, p, B, C, R):
     """Fill R[:nc] from the manifolds and the bodies' state at the start of the step."""
@@ -84,42 +129,19 @@ def prepare_contacts(c, p, B, C, R):
         imb = B.inv_m[b]
         iia = B.inv_i[a]
         iib = B.inv_i[b]
-        xax = B.x[a, 0]
-        xay = B.x[a, 1]
-        xbx = B.x[b, 0]
-        xby = B.x[b, 1]
-        vax = B.v[a, 0]
-        vay = B.v[a, 1]
         wa = B.w[a]
-        vbx = B.v[b, 0]
-        vby = B.v[b, 1]
         wb = B.w[b]
-        dvnx = (vbx - vax) * nx + (vby - vay) * ny
-        dvtx = -(vbx - vax) * ny + (vby - vay) * nx
+        dvx = B.v[b, 0] - B.v[a, 0]
+        dvy = B.v[b, 1] - B.v[a, 1]
+        dvnx = dvx * nx + dvy * ny
+        dvtx = -dvx * ny + dvy * nx
         cnt = C.count[k]
         for q in range(cnt):
             o = q * PT
-            rax = C.point[k, q, 0] - xax
-            ray = C.point[k, q, 1] - xay
-            rbx = C.point[k, q, 0] - xbx
-            rby = C.point[k, q, 1] - xby
-            rna = rax * ny - ray * nx
-            rnb = rbx * ny - rby * nx
-            rta = rax * nx + ray * ny
-            rtb = rbx * nx + rby * ny
-            R[k, o + RNA] = rna
-            R[k, o + RNB] = rnb
-            R[k, o + RTA] = rta
-            R[k, o + RTB] = rtb
-            kn = ima + imb + iia * rna * rna + iib * rnb * rnb
-            R[k, o + MASS_N] = 1.0 / kn if kn > 0.0 else 0.0
-            kt = ima + imb + iia * rta * rta + iib * rtb * rtb
-            R[k, o + MASS_T] = 1.0 / kt if kt > 0.0 else 0.0
-            R[k, o + SEP0] = -C.depth[k, q]
-            R[k, o + VN0] = dvnx + wb * rnb - wa * rna
-            vt = dvtx + wb * rtb - wa * rta
-            # Coulomb (seed eq. 23): static coefficient while sticking, dynamic once sliding
-            R[k, o + MU] = C.mu_s[k] if abs(vt) <= stick_speed else C.mu_d[k]
+            (R[k, o + RNA], R[k, o + RNB], R[k, o + RTA], R[k, o + RTB], R[k, o + MASS_N], R[k, o + MASS_T],
+             R[k, o + SEP0], R[k, o + VN0], R[k, o + MU]) = prepared_point(
+                C, k, q, B.x[a, 0], B.x[a, 1], B.x[b, 0], B.x[b, 1], nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb,
+                stick_speed)
             R[k, o + MAXJ] = 0.0
             R[k, o + BOUNCED] = 0.0
             R[k, o + JN] = C.jn[k, q]
@@ -129,31 +151,16 @@ def prepare_contacts(c, p, B, C, R):
             R[k, PT + BOUNCED] = 0.0
         R[k, NX] = nx
         R[k, NY] = ny
-        R[k, RIGID] = 1.0 if (ima == 0.0 or imb == 0.0) else 0.0
-        load = 0.0
-        for q in range(cnt):
-            load += C.jn[k, q]
-        hz = contact_hertz(p.hertz_static if R[k, RIGID] != 0.0 else p.hertz_dyn, load, ima, imb,
-                           B.bound_r[a], B.bound_r[b], p.h, g)
-        rate, mscale, iscale = softness(hz, p.damping_ratio, p.h)
-        R[k, SOFT] = rate
-        R[k, SOFT + 1] = mscale
-        R[k, SOFT + 2] = iscale
-        R[k, DEEPD] = DEEP * moving_size(ima, imb, B.bound_r[a], B.bound_r[b])
+        rigid, R[k, SOFT], R[k, SOFT + 1], R[k, SOFT + 2], R[k, DEEPD] = prepared_softness(p, B, C, k, a, b, ima,
+                                                                                        imb, g)
+        R[k, RIGID] = 1.0 if rigid else 0.0
         R[k, BLOCK] = 0.0
         if cnt == 2:
-            ra0 = R[k, RNA]
-            rb0 = R[k, RNB]
-            ra1 = R[k, PT + RNA]
-            rb1 = R[k, PT + RNB]
-            im = ima + imb
-            k11 = im + iia * ra0 * ra0 + iib * rb0 * rb0
-            k22 = im + iia * ra1 * ra1 + iib * rb1 * rb1
-            k12 = im + iia * ra0 * ra1 + iib * rb0 * rb1
+            k11, k22, k12, ok, inv_det = prepared_block(ima, imb, iia, iib, R[k, RNA], R[k, RNB], R[k, PT + RNA],
+                                                        R[k, PT + RNB])
             R[k, K11] = k11
             R[k, K22] = k22
             R[k, K12] = k12
-            ok, inv_det = block_mass(k11, k12, k22)
             if ok:
                 R[k, BLOCK] = 1.0
                 R[k, INV_DET] = inv_det

@@ -9,18 +9,25 @@ scratch rows' (constraints/contact_soft.py, ``R``) that a pass reads or writes, 
 inverse masses (read once per step instead of once per pass) and six slots where a lane leaves
 its bodies' new velocities for the scalar scatter.
 
-``pack`` copies the prepared rows into the blocks once per step; ``unpack`` copies what the
-passes accumulated (impulses, first-touch speeds, largest impulses, energy) back into ``R`` for
-restitution and the store; ``repack_normal`` takes restitution's impulses back.  A padding lane
-is all zeros (no mass: its impulses stay zero) and reads and writes one spare body row.
+``prepare_wide`` prepares a step's manifolds straight into the blocks (the same terms as
+contact_soft.prepare_contacts, through its helpers) and ``store_wide`` hands the impulses back to
+the contact table: a step without a bouncy contact never writes the rows ``R``.  Restitution works
+on the rows, so a step with a bouncy contact prepares ``R`` and ``pack`` copies it into the blocks;
+``unpack`` copies what the passes accumulated (impulses, first-touch speeds, largest impulses,
+energy) back into ``R`` for restitution and the store; ``repack_normal`` takes restitution's
+impulses back.  A padding lane is all zeros (no mass: its impulses stay zero) and reads and
+writes one spare body row.
 """
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
 from .._jit import kernel
 from .body_rows import II, IM, NB
 from .colouring import LANES
+from .contact_soft import prepared_block, prepared_point, prepared_softness
 from .contact_soft import (BLOCK, INV_DET, JN, JT, K11, K12, K22, KE0 as R_KE0, MASS_N, MASS_T, MAXJ, MU,
                            NX as R_NX, NY as R_NY, PT, RNA, RNB, RTA, RTB, SEP0, SOFT, VN0, DEEPD)
 
@@ -50,10 +57,7 @@ def pack(C, R, SB, order, slots, pad_row, block_solver, W, GA, GB):
         k = order[j]
         o = _at(j, 0)  # field f of slot j at o + f * LANES
         if k < 0:
-            for f in range(NW):
-                W[o + f * LANES] = 0.0
-            GA[j] = pad_row * NB
-            GB[j] = pad_row * NB
+            _pad(W, GA, GB, j, o, pad_row)
             continue
         a = C.a[k]
         b = C.b[k]
@@ -97,6 +101,112 @@ def pack(C, R, SB, order, slots, pad_row, block_solver, W, GA, GB):
         W[o + W_IMB * LANES] = SB[b, IM]
         W[o + W_IIA * LANES] = SB[a, II]
         W[o + W_IIB * LANES] = SB[b, II]
+
+
+@kernel(inline="always")
+def _pad(W, GA, GB, j, o, pad_row):
+    """Slot j (its fields at o + f * LANES) a padding lane."""
+    for f in range(NW):
+        W[o + f * LANES] = 0.0
+    GA[j] = pad_row * NB
+    GB[j] = pad_row * NB
+
+
+@kernel(inline="always")
+def _point(W, po, C, k, q, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed):
+    """Point q of manifold k prepared into its fields at po + f * LANES; returns its arms across
+    the normal (r_a x n, r_b x n) for the block solver."""
+    rna, rnb, rta, rtb, mn, mt, sep, vn0, mu = prepared_point(C, k, q, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib,
+                                                              dvnx, dvtx, wa, wb, stick_speed)
+    W[po + W_RNA * LANES] = rna
+    W[po + W_RNB * LANES] = rnb
+    W[po + W_RTA * LANES] = rta
+    W[po + W_RTB * LANES] = rtb
+    W[po + W_MN * LANES] = mn
+    W[po + W_MT * LANES] = mt
+    W[po + W_SEP * LANES] = sep
+    W[po + W_MU * LANES] = mu
+    W[po + W_VN0 * LANES] = vn0
+    W[po + W_MAXJ * LANES] = 0.0
+    W[po + W_JN * LANES] = C.jn[k, q]
+    W[po + W_JT * LANES] = C.jt[k, q]
+    return rna, rnb
+
+
+@kernel
+def prepare_wide(c, p, B, C, order, slots, pad_row, W, GA, GB):
+    """W, GA, GB for the slots 0..slots-1 from the manifolds and the bodies at the start of the
+    step: what ``prepare_contacts`` then ``pack`` leave there, without the rows between."""
+    stick_speed = p.stick_speed
+    g = math.hypot(c.gx, c.gy)
+    for j in range(slots):
+        k = order[j]
+        o = _at(j, 0)  # field f of slot j at o + f * LANES
+        if k < 0:
+            _pad(W, GA, GB, j, o, pad_row)
+            continue
+        a = C.a[k]
+        b = C.b[k]
+        GA[j] = a * NB
+        GB[j] = b * NB
+        nx = C.normal[k, 0]
+        ny = C.normal[k, 1]
+        ima = B.inv_m[a]
+        imb = B.inv_m[b]
+        iia = B.inv_i[a]
+        iib = B.inv_i[b]
+        wa = B.w[a]
+        wb = B.w[b]
+        dvx = B.v[b, 0] - B.v[a, 0]
+        dvy = B.v[b, 1] - B.v[a, 1]
+        dvnx = dvx * nx + dvy * ny
+        dvtx = -dvx * ny + dvy * nx
+        cnt = C.count[k]
+        xa, ya, xb, yb = B.x[a, 0], B.x[a, 1], B.x[b, 0], B.x[b, 1]
+        ra0, rb0 = _point(W, o, C, k, 0, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed)
+        ra1, rb1 = 0.0, 0.0
+        if cnt == 2:
+            ra1, rb1 = _point(W, o + PW * LANES, C, k, 1, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa,
+                              wb, stick_speed)
+        else:
+            for f in range(PW):
+                W[o + (PW + f) * LANES] = 0.0
+        W[o + W_NX * LANES] = nx
+        W[o + W_NY * LANES] = ny
+        _, rate, msc, isc, deep = prepared_softness(p, B, C, k, a, b, ima, imb, g)
+        k11 = k22 = k12 = inv_det = 0.0
+        use = False
+        if cnt == 2:
+            k11, k22, k12, ok, inv_det = prepared_block(ima, imb, iia, iib, ra0, rb0, ra1, rb1)
+            use = p.block_solver and ok
+        W[o + W_K11 * LANES] = k11
+        W[o + W_K22 * LANES] = k22
+        W[o + W_K12 * LANES] = k12
+        W[o + W_INVDET * LANES] = inv_det if use else 0.0
+        W[o + W_BLOCK * LANES] = 1.0 if use else 0.0
+        W[o + W_RATE * LANES] = rate
+        W[o + W_MSC * LANES] = msc
+        W[o + W_ISC * LANES] = isc
+        W[o + W_DEEP * LANES] = deep
+        W[o + W_KE0 * LANES] = 0.0  # set by the first biased pass of a bouncy pair; none here
+        W[o + W_BOUNCY * LANES] = 0.0
+        W[o + W_IMA * LANES] = ima
+        W[o + W_IMB * LANES] = imb
+        W[o + W_IIA * LANES] = iia
+        W[o + W_IIB * LANES] = iib
+
+
+@kernel
+def store_wide(C, W, order, slots):
+    """The blocks' accumulated impulses into the contact table (next step's warm start), as
+    ``unpack`` then contact_soft.store_impulses leave them."""
+    for j in range(slots):
+        k = order[j]
+        if k < 0:
+            continue
+        for q in range(C.count[k]):
+            C.jn[k, q] = W[_at(j, q * PW + W_JN)]
+            C.jt[k, q] = W[_at(j, q * PW + W_JT)]
 
 
 @kernel

@@ -2,10 +2,11 @@
 warm start, solve and relax passes run colour by colour over the wide layout
 (constraints/colouring.py, contact_wide.py, contact_coloured.py), Box2D v3's solver layout.
 
-Preparation, restitution and the impulse store stay the row code's (on ``R``): the prepared
-rows are packed into the blocks once per step, and what the passes accumulated is copied back
-before restitution (which then hands its impulses back) and before the store.  Springs and
-joints run exactly as in kernel.py, on the same body rows.
+The manifolds are prepared straight into the blocks and their impulses stored from them
+(contact_wide.prepare_wide, store_wide).  Restitution works on the row code's scratch ``R``: a
+step with a bouncy contact prepares the rows, packs them into the blocks, and copies what the
+passes accumulated back before restitution (which then hands its impulses back) and before the
+store.  Springs and joints run exactly as in kernel.py, on the same body rows.
 """
 from __future__ import annotations
 
@@ -18,7 +19,7 @@ from ...constraints.body_rows import (gather_bodies, integrate_row_positions, in
 from ...constraints.contact_coloured import RELAX, SOLVE, WARM, coloured_pass
 from ...constraints.contact_restitution import restitution_contacts
 from ...constraints.contact_soft import prepare_contacts, store_impulses
-from ...constraints.contact_wide import pack, repack_normal, unpack
+from ...constraints.contact_wide import pack, prepare_wide, repack_normal, store_wide, unpack
 from ...constraints.joints.dispatch import (project_joints, refresh_rows, solve_joints, store_joints,
                                             warm_start_joints)
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
@@ -59,9 +60,17 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W,
     broken = 0
     if not p.warm_starting:
         zero_impulses(C, c.nc)
-    prepare_contacts(c, p, B, C, R)
+    bouncy = False
+    for k in range(c.nc):
+        if C.e[k] != 0.0:
+            bouncy = True
+            break
     gather_bodies(B, n, SB)
-    pack(C, R, SB, order, slots, n + 1, p.block_solver, W, GA, GB)
+    if bouncy:  # restitution works on the rows (contact_wide.py): prepare them, then the blocks
+        prepare_contacts(c, p, B, C, R)
+        pack(C, R, SB, order, slots, n + 1, p.block_solver, W, GA, GB)
+    else:
+        prepare_wide(c, p, B, C, order, slots, n + 1, W, GA, GB)
     if J is not None:
         if not p.warm_starting:
             zero_joint_impulses(J, c.nj)
@@ -69,11 +78,6 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W,
         save_start(B, n, JW.X0, JW.Q0)
     eq_global = p.joint_solver == GLOBAL
     project = J is not None and eq_global and p.joint_projection
-    bouncy = False
-    for k in range(c.nc):
-        if C.e[k] != 0.0:
-            bouncy = True
-            break
     V0 = np.empty((n if bouncy or J is not None else 0, PIVOT_COLUMNS))
     if J is not None:
         save_pivots(c, B, J, JW, V0)
@@ -109,8 +113,11 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W,
             unpack(C, W, order, slots, R)
             restitution_contacts(c, p, SB, C, R, V0)
             repack_normal(C, R, order, slots, W)
-    unpack(C, W, order, slots, R)
-    store_impulses(c, C, R)
+    if bouncy:
+        unpack(C, W, order, slots, R)
+        store_impulses(c, C, R)
+    else:
+        store_wide(C, W, order, slots)
     if J is not None:
         broken = store_joints(c, J, JW, p.inv_h)
     store_velocities(B, n, SB)

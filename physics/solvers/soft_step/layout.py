@@ -63,8 +63,9 @@ class ColouredScratch:
             self.order = np.zeros(2 * need, np.int32)
 
     def grow(self, slots: int) -> None:
-        """Blocks for at least ``slots`` slots (doubling)."""
-        self._wide(2 * slots)
+        """Blocks for at least ``slots`` slots (doubling), never fewer than now: the scratch is the
+        mode's, shared by every world of the process, and a pack may hold an older, shorter one."""
+        self._wide(max(2 * slots, len(self.GA)))
 
     def pack_fields(self) -> tuple:
         """The scratch the one-call driver's pack holds (step/soft_driver.py: ``wide``)."""
