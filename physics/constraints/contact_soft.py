@@ -71,6 +71,20 @@ NF = K11 + 13
 
 
 @kernel(inline="always")
+def manifold_state(B, C, k):
+    """(a, b, n_x, n_y, 1/m_a, 1/m_b, 1/I_a, 1/I_b, w_a, w_b, (v_b - v_a) . n, (v_b - v_a) . t) of
+    manifold k at the start of the step."""
+    a = C.a[k]
+    b = C.b[k]
+    nx = C.normal[k, 0]
+    ny = C.normal[k, 1]
+    dvx = B.v[b, 0] - B.v[a, 0]
+    dvy = B.v[b, 1] - B.v[a, 1]
+    return (a, b, nx, ny, B.inv_m[a], B.inv_m[b], B.inv_i[a], B.inv_i[b], B.w[a], B.w[b], dvx * nx + dvy * ny,
+            -dvx * ny + dvy * nx)
+
+
+@kernel(inline="always")
 def prepared_point(C, k, q, xax, xay, xbx, xby, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed):
     """Point q of manifold k at the start of the step: (r_a x n, r_b x n, r_a . n, r_b . n, normal
     mass, tangent mass, separation, normal speed, friction coefficient); the module doc's terms."""
@@ -121,20 +135,7 @@ def prepare_contacts(c, p, B, C, R):
     stick_speed = p.stick_speed
     g = math.hypot(c.gx, c.gy)
     for k in range(c.nc):
-        a = C.a[k]
-        b = C.b[k]
-        nx = C.normal[k, 0]
-        ny = C.normal[k, 1]
-        ima = B.inv_m[a]
-        imb = B.inv_m[b]
-        iia = B.inv_i[a]
-        iib = B.inv_i[b]
-        wa = B.w[a]
-        wb = B.w[b]
-        dvx = B.v[b, 0] - B.v[a, 0]
-        dvy = B.v[b, 1] - B.v[a, 1]
-        dvnx = dvx * nx + dvy * ny
-        dvtx = -dvx * ny + dvy * nx
+        a, b, nx, ny, ima, imb, iia, iib, wa, wb, dvnx, dvtx = manifold_state(B, C, k)
         cnt = C.count[k]
         for q in range(cnt):
             o = q * PT

@@ -27,7 +27,7 @@ import numpy as np
 from .._jit import kernel
 from .body_rows import II, IM, NB
 from .colouring import LANES
-from .contact_soft import prepared_block, prepared_point, prepared_softness
+from .contact_soft import manifold_state, prepared_block, prepared_point, prepared_softness
 from .contact_soft import (BLOCK, INV_DET, JN, JT, K11, K12, K22, KE0 as R_KE0, MASS_N, MASS_T, MAXJ, MU,
                            NX as R_NX, NY as R_NY, PT, RNA, RNB, RTA, RTB, SEP0, SOFT, VN0, DEEPD)
 
@@ -145,22 +145,9 @@ def prepare_wide(c, p, B, C, order, slots, pad_row, W, GA, GB):
         if k < 0:
             _pad(W, GA, GB, j, o, pad_row)
             continue
-        a = C.a[k]
-        b = C.b[k]
+        a, b, nx, ny, ima, imb, iia, iib, wa, wb, dvnx, dvtx = manifold_state(B, C, k)
         GA[j] = a * NB
         GB[j] = b * NB
-        nx = C.normal[k, 0]
-        ny = C.normal[k, 1]
-        ima = B.inv_m[a]
-        imb = B.inv_m[b]
-        iia = B.inv_i[a]
-        iib = B.inv_i[b]
-        wa = B.w[a]
-        wb = B.w[b]
-        dvx = B.v[b, 0] - B.v[a, 0]
-        dvy = B.v[b, 1] - B.v[a, 1]
-        dvnx = dvx * nx + dvy * ny
-        dvtx = -dvx * ny + dvy * nx
         cnt = C.count[k]
         xa, ya, xb, yb = B.x[a, 0], B.x[a, 1], B.x[b, 0], B.x[b, 1]
         ra0, rb0 = _point(W, o, C, k, 0, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed)

@@ -45,9 +45,9 @@ class SoftStep(SolverMode):
         Setting("solver_layout", "rows", choices=LAYOUTS,
                 doc="rows: the contact passes walk the manifolds in table order, one at a time; "
                     "coloured: graph-coloured (no two manifolds of a colour share a moving body) and "
-                    "solved eight side by side in vector code, Box2D v3's wide solver (faster on big "
-                    "scenes; the order differs, so results differ from rows' by rounding-level "
-                    "Gauss-Seidel order effects)"),
+                    "solved eight side by side in vector code over float32 blocks, Box2D v3's wide "
+                    "solver (faster on large piles; the Gauss-Seidel order differs, so stacks settle "
+                    "differently: docs/benchmarks.md, 'The coloured layout in the one-call step')"),
     )
     # sub-step length and its inverse; (bias rate, mass scale, impulse scale) of contacts between
     # two moving bodies and of contacts against a body that does not move
