@@ -13,7 +13,7 @@ the lowest free colour from 1 up (colour 0 is left to the moving pairs, as in Bo
 v3 takes the highest free one instead; measured here, that solves the ground contacts after
 the stack they carry and pyramid 20's top box drifted 0.075 m in 10 s, against 0.019 m from
 1 up (0.013 m in the row solve's table order).  A manifold that finds none goes to the OVERFLOW colour, whose
-manifolds are then solved one to a block (still correct, only not side by side).  A colour set
+manifolds are then solved one after the other (still correct, only not side by side).  A colour set
 per body is one bit mask, so the stage costs two passes over the manifolds and one over the
 bodies, with no per-colour tables to clear.
 
@@ -70,8 +70,8 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
     the contact table's column): the colour carried from the previous step, -1 for a new pair;
     a valid one is kept, the others get the lowest free.  Writes
     ``order`` (slot -> manifold, -1 for padding; colour by colour, overflow first as Box2D
-    solves it first, each colour padded to whole blocks of LANES, an overflow manifold alone
-    in its block; with ``force_overflow`` every manifold, Box2D's B2_FORCE_OVERFLOW: the table's
+    solves it first, each colour padded to whole blocks of LANES, the overflow colour's solved
+    lane after lane (contact_coloured.py: ``seq``); with ``force_overflow`` every manifold, Box2D's B2_FORCE_OVERFLOW: the table's
     order, one manifold at a time, as the row solve) and ``bstart`` (COLOURS + 1 block offsets: colour c is blocks
     bstart[c]..bstart[c + 1], in solve order).  Returns the number of slots used (a multiple
     of LANES; ``order`` must hold at least nc * LANES).
@@ -112,15 +112,14 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
                     used[b] |= bit
             colour[k] = c
             count[c] += 1
-    # solve order: the overflow colour first (one manifold per block), then 0, 1, ...
+    # solve order: the overflow colour first (its blocks lane after lane), then 0, 1, ...
     first = np.empty(COLOURS, np.int64)  # first slot of each colour
     slot = 0
     for r in range(COLOURS):
         c = OVERFLOW if r == 0 else r - 1
         bstart[r] = slot // LANES
         first[c] = slot
-        size = count[c] * LANES if c == OVERFLOW else count[c]
-        slot += (size + LANES - 1) // LANES * LANES
+        slot += (count[c] + LANES - 1) // LANES * LANES
     bstart[COLOURS] = slot // LANES
     for j in range(slot):
         order[j] = -1
@@ -128,5 +127,5 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
     for k in range(nc):
         c = colour[k]
         order[fill[c]] = k
-        fill[c] += LANES if c == OVERFLOW else 1
+        fill[c] += 1
     return slot

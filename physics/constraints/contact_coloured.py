@@ -46,11 +46,12 @@ def _energy(vx, vy, w, im, ii):
 
 
 @kernel(inline="always")
-def _scatter(blk, W_, GA, GB, S):
-    """The new velocities of block ``blk``'s bodies back into the body rows (scalar stores),
-    before the next block reads them (an overflow colour's blocks may share bodies)."""
+def _scatter(blk, lo, hi, W_, GA, GB, S):
+    """The new velocities of lanes lo..hi-1 of block ``blk`` back into the body rows (scalar
+    stores), before the next block reads them; lane by lane in the overflow colour, whose
+    manifolds may share bodies (``seq``)."""
     o = blk * BLOCK_SIZE
-    for l in range(L):
+    for l in range(lo, hi):
         i = o + l
         a = GA[blk * L + l]
         b = GB[blk * L + l]
@@ -63,8 +64,9 @@ def _scatter(blk, W_, GA, GB, S):
 
 
 @kernel_noalias
-def warm_colour(nb, W_, GA, GB, S):
-    """Warm start of ``nb`` blocks: every point's accumulated impulses applied."""
+def warm_colour(nb, W_, GA, GB, S, seq):
+    """Warm start of ``nb`` blocks: every point's accumulated impulses applied.  ``seq`` None:
+    the lanes side by side (one colour); otherwise one after the other (the overflow colour)."""
     for blk in range(nb):
         o = blk * BLOCK_SIZE
         for l in range(L):
@@ -91,7 +93,10 @@ def warm_colour(nb, W_, GA, GB, S):
             W_[i + W_VBX * L] = S[b + VX] + imb * px
             W_[i + W_VBY * L] = S[b + VY] + imb * py
             W_[i + W_WB * L] = S[b + W] + W_[i + W_IIB * L] * ab
-        _scatter(blk, W_, GA, GB, S)
+            if seq is not None:
+                _scatter(blk, l, l + 1, W_, GA, GB, S)
+        if seq is None:
+            _scatter(blk, 0, L, W_, GA, GB, S)
 
 
 @kernel(inline="always")
@@ -117,9 +122,9 @@ def _friction(jn, old, mu, mass_t, rta, rtb, vax, vay, wa, vbx, vby, wb, nx, ny,
 
 
 @kernel_noalias
-def solve_colour(nb, W_, GA, GB, S, inv_h, push, use_bias):
+def solve_colour(nb, W_, GA, GB, S, inv_h, push, use_bias, seq):
     """One pass over ``nb`` blocks of one colour: per manifold the normal rows (2x2 block or
-    sequential), then friction; ``use_bias`` False is the relax pass.  The lane body is written
+    sequential), then friction; ``use_bias`` False is the relax pass; ``seq`` as warm_colour's.  The lane body is written
     out here, not in a helper: an array passed to an inlined function leaves reference-count
     calls in the loop, and a call stops LLVM from vectorising it."""
     for blk in range(nb):
@@ -239,7 +244,10 @@ def solve_colour(nb, W_, GA, GB, S, inv_h, push, use_bias):
             W_[i + W_VBX * L] = vbx
             W_[i + W_VBY * L] = vby
             W_[i + W_WB * L] = wb
-        _scatter(blk, W_, GA, GB, S)
+            if seq is not None:
+                _scatter(blk, l, l + 1, W_, GA, GB, S)
+        if seq is None:
+            _scatter(blk, 0, L, W_, GA, GB, S)
 
 
 WARM, SOLVE, RELAX = range(3)
@@ -258,7 +266,12 @@ def coloured_pass(kind, bstart, W_, GA, GB, SB, inv_h, push):
         Wc = W_[b0 * BLOCK_SIZE:b1 * BLOCK_SIZE]
         ga = GA[b0 * L:b1 * L]
         gb = GB[b0 * L:b1 * L]
-        if kind == WARM:
-            warm_colour(b1 - b0, Wc, ga, gb, S)
+        if r == 0:  # the overflow colour (colouring.py: first in solve order): lane after lane
+            if kind == WARM:
+                warm_colour(b1 - b0, Wc, ga, gb, S, np.int64(1))
+            else:
+                solve_colour(b1 - b0, Wc, ga, gb, S, inv_h, push, kind == SOLVE, np.int64(1))
+        elif kind == WARM:
+            warm_colour(b1 - b0, Wc, ga, gb, S, None)
         else:
-            solve_colour(b1 - b0, Wc, ga, gb, S, inv_h, push, kind == SOLVE)
+            solve_colour(b1 - b0, Wc, ga, gb, S, inv_h, push, kind == SOLVE, None)

@@ -25,7 +25,7 @@ LAYOUTS = ("rows", "coloured")
 
 class ColouredScratch:
     def __init__(self):
-        # every manifold alone in its block: the row solve's order (tests); an array, so that the
+        # every manifold in the overflow colour: the row solve's order (tests); an array, so that the
         # one-call driver's pack sees a change made after it was built
         self.overflow = np.zeros(1, np.bool_)
         self.used = np.zeros(64, np.uint64)
