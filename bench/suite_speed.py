@@ -32,9 +32,10 @@ from .suite.common import strip_box2d
 from .suite.scripts import Scripted, sleep_threshold
 from .timing import chunk_ratio, interleaved, median_ms
 
-def _ours(desc):
+def _ours(desc, settings=None):
     """Stelkropp's world from the scene loader (it refuses what the core lacks, e.g. joints before
-    the joints issue lands, instead of building a different scene), behind OursSim."""
+    the joints issue lands, instead of building a different scene), behind OursSim; ``settings``:
+    soft_step settings instead of their defaults (``--set``)."""
     from physics.scene import scene_from_dict
     data = strip_box2d(desc)
     data.pop("bench", None)
@@ -46,6 +47,7 @@ def _ours(desc):
         world = None  # a loader without version 2: the scene uses only version-1 bodies
     sim = OursSim(desc, world=world)
     sim.world.solver = "soft_step"
+    sim.world.settings.update(settings or {})
     if (v := sleep_threshold(desc)) is not None:
         sim.world.sleep_linear = v  # Box2D's per-body sleepThreshold, the same on every body (rain)
     bench = desc.get("bench", {})
@@ -60,9 +62,9 @@ def _pymunk(desc):
     return build("pymunk", desc)
 
 
-def _sims(desc):
+def _sims(desc, settings=None):
     """{label: Sim} of every engine that builds ``desc``, and {label: why not} for the others."""
-    makers = {OURS: lambda: _ours(desc),
+    makers = {OURS: lambda: _ours(desc, settings),
               B1: lambda: build("box2d_v3", desc, threads=1, sleeping=None, track_angles=False),
               B2: lambda: build("box2d_v3", desc, threads=2, sleeping=None, track_angles=False),
               PM: lambda: _pymunk(desc)}
@@ -75,9 +77,10 @@ def _sims(desc):
     return sims, why
 
 
-def run_scene(name, steps=None, chunk=10, warm=20, budget_s=None, desc=None) -> dict:
+def run_scene(name, steps=None, chunk=10, warm=20, budget_s=None, desc=None, settings=None) -> dict:
     """One suite scene timed in every engine that builds it; a row dict (ms/step, ratios).
-    ``desc``: the scene built with other parameters (tests: smaller), default ``SUITE[name]()``."""
+    ``desc``: the scene built with other parameters (tests: smaller), default ``SUITE[name]()``;
+    ``settings``: soft_step settings of ours instead of the defaults."""
     desc = desc if desc is not None else SUITE[name]()
     n = int(steps or desc.get("bench", {}).get("steps", 300))
     if desc.get("bench", {}).get("events"):  # a short run: the events it reaches (both sides pre-translate them)
@@ -85,7 +88,7 @@ def run_scene(name, steps=None, chunk=10, warm=20, budget_s=None, desc=None) -> 
     row = {"scene": name, "bodies": len(desc["bodies"]), "steps": n, "needs": NEEDS.get(name, []),
            "suite_steps": desc.get("bench", {}).get("steps"),
            "source": desc.get("bench", {}).get("source")}
-    sims, why = _sims(desc)
+    sims, why = _sims(desc, settings)
     row["not_built"] = why
     if OURS not in sims:
         row["status"] = "stelkropp cannot build it yet"
@@ -134,7 +137,15 @@ def main(argv=None) -> int:
     ap.add_argument("--steps", type=int, default=None, help="steps per scene (default: the suite's own counts)")
     ap.add_argument("--budget", type=float, default=None, help="seconds per scene before it is cut")
     ap.add_argument("--out", type=Path, default=RESULTS)
+    ap.add_argument("--set", action="append", metavar="NAME=VALUE", dest="settings",
+                    help="a soft_step setting of ours instead of its default (repeatable; the table is "
+                         "printed, not written)")
     a = ap.parse_args(argv)
+    from .reliability.samples import parse_settings
+    try:
+        settings = parse_settings(a.settings)
+    except ValueError as err:
+        ap.error(str(err))
     names = a.scenes.split(",")
     bad = [n for n in names if n not in SUITE]
     if bad:
@@ -147,10 +158,14 @@ def main(argv=None) -> int:
     rows = []
     for name in (bar := tqdm(names, unit="scene", file=sys.stderr)):
         bar.set_description(name)
-        rows.append(run_scene(name, a.steps, budget_s=a.budget))
+        rows.append(run_scene(name, a.steps, budget_s=a.budget, settings=settings))
+    md = table_md(rows)
+    if settings:  # not the default mode: the recorded results stay the defaults'
+        print(f"soft_step settings: {settings}")
+        print("\n".join(md))
+        return 0
     a.out.mkdir(parents=True, exist_ok=True)
     (a.out / "box2d_suite.json").write_text(json.dumps(rows, indent=1, default=float))
-    md = table_md(rows)
     (a.out / "box2d_suite.md").write_text("\n".join(md) + "\n")
     plot(rows, a.out / "box2d_suite.png")
     print("\n".join(md))

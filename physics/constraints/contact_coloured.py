@@ -124,9 +124,9 @@ def _friction(jn, old, mu, mass_t, rta, rtb, vax, vay, wa, vbx, vby, wb, nx, ny,
 @kernel_noalias
 def solve_colour(nb, W_, GA, GB, S, inv_h, push, use_bias, seq):
     """One pass over ``nb`` blocks of one colour: per manifold the normal rows (2x2 block or
-    sequential), then friction; ``use_bias`` False is the relax pass; ``seq`` as warm_colour's.  The lane body is written
-    out here, not in a helper: an array passed to an inlined function leaves reference-count
-    calls in the loop, and a call stops LLVM from vectorising it."""
+    sequential), then friction; ``use_bias`` False is the relax pass; ``seq`` as warm_colour's.
+    The lane body is written out here, not in a helper: an array passed to an inlined function
+    leaves reference-count calls in the loop, and a call stops LLVM from vectorising it."""
     for blk in range(nb):
         o = blk * BLOCK_SIZE
         for l in range(L):

@@ -8,7 +8,7 @@ blocks grow (doubling) for a second call.  Scratch is reused.
 The blocks are float32, as Box2D v3's (b2FloatW): a pass streams every block once, and at
 float64 a large pile's blocks outgrow the cache (suite washer and large_pyramid 11-12 % faster
 a step in float32, docs/benchmarks.md).  The arithmetic stays in float64 where a body's state
-enters it.  The test switch that puts every manifold in a block of its own keeps float64 blocks:
+enters it.  The test switch that puts every manifold in the overflow colour keeps float64 blocks:
 that order reproduces the row solve bit for bit (tests/test_coloured_solve.py).
 """
 from __future__ import annotations
@@ -57,8 +57,8 @@ class ColouredScratch:
         nc = store.contacts.n if rows is None else rows
         if n > len(self.used):
             self.used = np.zeros(2 * n, np.uint64)
-        # at most one block per manifold (overflow) plus one partial block per colour
-        need = nc * LANES + COLOURS * LANES
+        # every colour (the overflow one too) padded to whole blocks: at most LANES - 1 padding each
+        need = nc + COLOURS * LANES
         if need > len(self.order):
             self.order = np.zeros(2 * need, np.int32)
 
