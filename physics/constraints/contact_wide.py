@@ -151,21 +151,19 @@ def prepare_wide(c, p, B, C, order, slots, pad_row, W, GA, GB):
         cnt = C.count[k]
         xa, ya, xb, yb = B.x[a, 0], B.x[a, 1], B.x[b, 0], B.x[b, 1]
         ra0, rb0 = _point(W, o, C, k, 0, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed)
-        ra1, rb1 = 0.0, 0.0
+        k11 = k22 = k12 = inv_det = 0.0
+        use = False
         if cnt == 2:
             ra1, rb1 = _point(W, o + PW * LANES, C, k, 1, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa,
                               wb, stick_speed)
+            k11, k22, k12, ok, inv_det = prepared_block(ima, imb, iia, iib, ra0, rb0, ra1, rb1)
+            use = p.block_solver and ok
         else:
             for f in range(PW):
                 W[o + (PW + f) * LANES] = 0.0
         W[o + W_NX * LANES] = nx
         W[o + W_NY * LANES] = ny
         _, rate, msc, isc, deep = prepared_softness(p, B, C, k, a, b, ima, imb, g)
-        k11 = k22 = k12 = inv_det = 0.0
-        use = False
-        if cnt == 2:
-            k11, k22, k12, ok, inv_det = prepared_block(ima, imb, iia, iib, ra0, rb0, ra1, rb1)
-            use = p.block_solver and ok
         W[o + W_K11 * LANES] = k11
         W[o + W_K22 * LANES] = k22
         W[o + W_K12 * LANES] = k12

@@ -22,8 +22,8 @@ from ..collision.broadphase.sweep import sweep_emit
 from ..collision.broadphase.fixture_filter import filter_reachable
 from ..collision.narrowphase.kernel import collide_with, sort_pairs
 from ..constraints.joints.kinds import kinds_changed_in
-from ..constraints.colouring import COLOURS, LANES, colour_contacts
-from ..solvers.soft_step.coloured import soft_step_wide
+from ..constraints.colouring import COLOURS, LANES
+from ..solvers.soft_step.coloured import colour_blocks, soft_step_wide
 from ..solvers.soft_step.kernel import soft_step
 from ..store.optional import optional_joints, optional_springs
 from ..store.table_type import make_table
@@ -111,14 +111,12 @@ def _links(J, nj, out):
 
 @kernel
 def _colour(B, C, n, nc, wide):
-    """The slots the coloured layout's blocks need this step (colouring.colour_contacts, into
-    ``wide``'s scratch), minus that when the blocks are shorter; 0 for the rows layout (``wide``
-    None)."""
+    """coloured.colour_blocks into ``wide``'s scratch: the slots the blocks need this step, minus
+    that when they are shorter; 0 for the rows layout (``wide`` None)."""
     if wide is None:
         return 0
     used, order, bstart, overflow, _, GA, _ = wide
-    slots = colour_contacts(C.a, C.b, nc, B.inv_m, B.inv_i, n, used, C.colour, order, bstart, overflow[0])
-    return slots if slots <= GA.shape[0] else -slots
+    return colour_blocks(B, C, n, nc, used, order, bstart, overflow[0], GA)
 
 
 @kernel

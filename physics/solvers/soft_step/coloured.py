@@ -32,6 +32,14 @@ from ...constraints.springs.substep import solve_springs
 from .kernel import GLOBAL
 
 
+@kernel
+def colour_blocks(B, C, n, nc, used, order, bstart, force_overflow, GA):
+    """The manifolds coloured (colouring.colour_contacts, the colours in ``C.colour``): the slots
+    the blocks need, or minus that when ``GA`` (the blocks' body offsets) is shorter."""
+    slots = colour_contacts(C.a, C.b, nc, B.inv_m, B.inv_i, n, used, C.colour, order, bstart, force_overflow)
+    return slots if slots <= GA.shape[0] else -slots
+
+
 @kernel(entry=True, runtime=True)
 def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart, force_overflow, W, GA,
                        GB):
@@ -42,9 +50,9 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
     needed when GA is too short (nothing changed: call again with larger
     blocks; sized here, the colouring costs no extra call from Python)."""
     c = ctx[0]
-    slots = colour_contacts(C.a, C.b, c.nc, B.inv_m, B.inv_i, c.n, used, C.colour, order, bstart, force_overflow)
-    if slots > len(GA):
-        return -slots
+    slots = colour_blocks(B, C, c.n, c.nc, used, order, bstart, force_overflow, GA)
+    if slots < 0:
+        return slots
     return soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W, GA, GB)
 
 
