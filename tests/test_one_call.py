@@ -146,7 +146,7 @@ def test_driver_grows_the_coloured_blocks():
     oc = w._pipeline.one_call
     assert oc.P is not None and oc.wide is not None, "the driver did not run the coloured world"
     assert len(w._mode.coloured.GA) > first
-    assert oc.wide[5] is w._mode.coloured.GA  # the pack holds the grown blocks
+    assert oc.wide[6] is w._mode.coloured.GA  # the pack holds the grown blocks
 
 
 def test_driver_switches_to_the_whole_narrow_phase():

@@ -9,10 +9,12 @@ changes their velocity, so two rows reading one of them do not conflict.
 
 Greedy first fit in the table's order, as Box2D v3: a manifold between two moving bodies takes
 the lowest of the first DYNAMIC_COLOURS colours free at both bodies; one against a fixed body
-the lowest free colour from 1 up (colour 0 is left to the moving pairs, as in Box2D v3).  Box2D
-v3 takes the highest free one instead; measured here, that solves the ground contacts after
-the stack they carry and pyramid 20's top box drifted 0.075 m in 10 s, against 0.019 m from
-1 up (0.013 m in the row solve's table order).  A manifold that finds none goes to the OVERFLOW colour, whose
+the highest free colour below OVERFLOW (never 0), so the contacts that carry a pile's weight
+to the ground are solved last in every pass and have the last word.  Measured over Box2D v3's
+samples (docs/reliability.md): with them first (the lowest free colour from 1 up) the tiny
+pyramid's top moved 3.65 box sizes in 10 s and overlap recovery pushed at 3.93 m/s; last, 0.70
+and 3.55 (Box2D v3: 1.33 and 3.42), with friction_pass "faces_in_relax" (contact_soft.py;
+without it pyramid 20's top crept 0.076 m in 10 s, with it 0.025).  A manifold that finds none goes to the OVERFLOW colour, whose
 manifolds are then solved one after the other (still correct, only not side by side).  A colour set
 per body is one bit mask, so the stage costs two passes over the manifolds and one over the
 bodies, with no per-colour tables to clear.
@@ -21,7 +23,7 @@ Colours persist, as in Box2D v3 (a contact is added to the graph when it begins 
 removed when it stops): the first pass keeps every carried colour that is still valid (in its
 range, free at its moving bodies; checked, so a body that changed kind or a stale table can
 never break the colouring), the second gives the rest (new pairs, and overflow ones, which try
-again) the lowest free colour.  Recolouring from scratch every step instead lets one contact
+again) a free colour.  Recolouring from scratch every step instead lets one contact
 coming or going shift the colours, and so the Gauss-Seidel order, of the manifolds after it.
 """
 from __future__ import annotations
@@ -51,6 +53,18 @@ def _lowest_free(taken, lo, hi):
 
 
 @kernel(inline="always")
+def _highest_free(taken, lo, hi):
+    """The highest colour in lo..hi-1 not in the bit set ``taken``; OVERFLOW when none is."""
+    one = np.uint64(1)
+    c = hi - 1
+    while c >= lo:  # at most hi - lo shifts
+        if (taken >> np.uint64(c)) & one == 0:
+            return c
+        c -= 1
+    return OVERFLOW
+
+
+@kernel(inline="always")
 def _kept(c, ma, mb, taken):
     """May a manifold keep its carried colour ``c``: in the range of its kind, free at its bodies?"""
     if c < 0 or c == OVERFLOW:
@@ -68,7 +82,7 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
 
     ``used`` (n uint64, scratch): the colours taken at each body.  ``colour[k]`` (in and out,
     the contact table's column): the colour carried from the previous step, -1 for a new pair;
-    a valid one is kept, the others get the lowest free.  Writes
+    a valid one is kept, the others get a free one (the lowest for two moving bodies, the highest with a fixed one).  Writes
     ``order`` (slot -> manifold, -1 for padding; colour by colour, overflow first as Box2D
     solves it first, each colour padded to whole blocks of LANES, the overflow colour's solved
     lane after lane (contact_coloured.py: ``seq``); with ``force_overflow`` every manifold, Box2D's B2_FORCE_OVERFLOW: the table's
@@ -101,7 +115,7 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
                 elif ma and mb:
                     c = _lowest_free(taken, 0, DYNAMIC_COLOURS)
                 elif ma or mb:
-                    c = _lowest_free(taken, 1, OVERFLOW)
+                    c = _highest_free(taken, 1, OVERFLOW)
                 else:
                     c = 1  # two fixed bodies: nothing to conflict with (any colour would do)
             if c != OVERFLOW:

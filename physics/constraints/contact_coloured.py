@@ -6,7 +6,7 @@ speculative rows, the 2x2 block solver of constraints/block.py, Coulomb friction
 first-touch speeds, largest impulses and pair energy restitution needs), on the blocks of
 constraints/contact_wide.py.  Within a colour no two manifolds share a moving body
 (constraints/colouring.py), so the LANES manifolds of a block are solved side by side: the lane
-loop gathers both bodies' state, solves and leaves the new velocities in the block, and a
+loop gathers both bodies' state, solves and leaves the new velocities in float64 slots (``WV``), and a
 second, scalar loop scatters them back.  For the lane loop to become vector code it must be
 straight-line: the block solver's four cases and the sequential fallback are both computed and
 the answer selected (branches on data would stop LLVM), array arguments are noalias
@@ -24,16 +24,17 @@ from __future__ import annotations
 import numpy as np
 
 from .._jit import kernel, kernel_noalias
-from .body_rows import DCOS as _DC, DPX as _DX, DPY as _DY, DSIN as _DS, VX as _VX, VY as _VY, W as _W
+from .body_rows import (DCOS as _DC, DPX as _DX, DPY as _DY, DSIN as _DS, II as _II, IM as _IM, VX as _VX,
+                        VY as _VY, W as _W)
 from .colouring import COLOURS, LANES
-from .contact_soft import deep_bias
-from .contact_wide import (BLOCK_SIZE, PW, W_BLOCK, W_BOUNCY, W_IIA, W_IIB, W_IMA, W_IMB, W_INVDET, W_ISC, W_JN,
-                           W_JT, W_K11, W_K12, W_K22, W_KE0, W_MAXJ, W_MN, W_MSC, W_MT, W_MU, W_NX, W_NY, W_RATE,
-                           W_RNA, W_RNB, W_RTA, W_RTB, W_SEP, W_VAX, W_VAY, W_VBX, W_VBY, W_VN0, W_WA, W_WB, W_DEEP)
+from .contact_soft import deep_bias, friction_late
+from .contact_wide import (BLOCK_SIZE, PW, V_SIZE, V_VAX, V_VAY, V_VBX, V_VBY, V_WA, V_WB, W_BLOCK, W_BOUNCY,
+                           W_DEEP, W_INVDET, W_ISC, W_JN, W_JT, W_K11, W_K12, W_K22, W_KE0, W_MAXJ, W_MN, W_MSC,
+                           W_MT, W_MU, W_NX, W_NY, W_RATE, W_RNA, W_RNB, W_RTA, W_RTB, W_SEP, W_VN0)
 
 # body row offsets as uint64: an unsigned index has no negative-index wraparound code and
 # uint64 + int64 would be float64 in numba
-VX, VY, W, DPX, DPY, DCOS, DSIN = (np.uint64(f) for f in (_VX, _VY, _W, _DX, _DY, _DC, _DS))
+VX, VY, W, IM, II, DPX, DPY, DCOS, DSIN = (np.uint64(f) for f in (_VX, _VY, _W, _IM, _II, _DX, _DY, _DC, _DS))
 L = LANES
 P1 = PW * L  # offset of the second point's fields
 
@@ -46,25 +47,25 @@ def _energy(vx, vy, w, im, ii):
 
 
 @kernel(inline="always")
-def _scatter(blk, lo, hi, W_, GA, GB, S):
-    """The new velocities of lanes lo..hi-1 of block ``blk`` back into the body rows (scalar
-    stores), before the next block reads them; lane by lane in the overflow colour, whose
+def _scatter(blk, lo, hi, WV, GA, GB, S):
+    """The new velocities of lanes lo..hi-1 of block ``blk`` (in ``WV``) back into the body rows
+    (scalar stores), before the next block reads them; lane by lane in the overflow colour, whose
     manifolds may share bodies (``seq``)."""
-    o = blk * BLOCK_SIZE
+    o = blk * V_SIZE
     for l in range(lo, hi):
         i = o + l
         a = GA[blk * L + l]
         b = GB[blk * L + l]
-        S[a + VX] = W_[i + W_VAX * L]
-        S[a + VY] = W_[i + W_VAY * L]
-        S[a + W] = W_[i + W_WA * L]
-        S[b + VX] = W_[i + W_VBX * L]
-        S[b + VY] = W_[i + W_VBY * L]
-        S[b + W] = W_[i + W_WB * L]
+        S[a + VX] = WV[i + V_VAX * L]
+        S[a + VY] = WV[i + V_VAY * L]
+        S[a + W] = WV[i + V_WA * L]
+        S[b + VX] = WV[i + V_VBX * L]
+        S[b + VY] = WV[i + V_VBY * L]
+        S[b + W] = WV[i + V_WB * L]
 
 
 @kernel_noalias
-def warm_colour(nb, W_, GA, GB, S, seq):
+def warm_colour(nb, W_, WV, GA, GB, S, seq):
     """Warm start of ``nb`` blocks: every point's accumulated impulses applied.  ``seq`` None:
     the lanes side by side (one colour); otherwise one after the other (the overflow colour)."""
     for blk in range(nb):
@@ -85,18 +86,19 @@ def warm_colour(nb, W_, GA, GB, S, seq):
                 (jn1 * W_[i + P1 + W_RNA * L] + jt1 * W_[i + P1 + W_RTA * L])
             ab = (jn0 * W_[i + W_RNB * L] + jt0 * W_[i + W_RTB * L]) + \
                 (jn1 * W_[i + P1 + W_RNB * L] + jt1 * W_[i + P1 + W_RTB * L])
-            ima = W_[i + W_IMA * L]
-            imb = W_[i + W_IMB * L]
-            W_[i + W_VAX * L] = S[a + VX] - ima * px
-            W_[i + W_VAY * L] = S[a + VY] - ima * py
-            W_[i + W_WA * L] = S[a + W] - W_[i + W_IIA * L] * aa
-            W_[i + W_VBX * L] = S[b + VX] + imb * px
-            W_[i + W_VBY * L] = S[b + VY] + imb * py
-            W_[i + W_WB * L] = S[b + W] + W_[i + W_IIB * L] * ab
+            ima = S[a + IM]  # the inverse masses in float64, from the body rows: the same
+            imb = S[b + IM]  # numbers on both sides of an impulse keep momentum exact
+            v = blk * V_SIZE + l
+            WV[v + V_VAX * L] = S[a + VX] - ima * px
+            WV[v + V_VAY * L] = S[a + VY] - ima * py
+            WV[v + V_WA * L] = S[a + W] - S[a + II] * aa
+            WV[v + V_VBX * L] = S[b + VX] + imb * px
+            WV[v + V_VBY * L] = S[b + VY] + imb * py
+            WV[v + V_WB * L] = S[b + W] + S[b + II] * ab
             if seq is not None:
-                _scatter(blk, l, l + 1, W_, GA, GB, S)
+                _scatter(blk, l, l + 1, WV, GA, GB, S)
         if seq is None:
-            _scatter(blk, 0, L, W_, GA, GB, S)
+            _scatter(blk, 0, L, WV, GA, GB, S)
 
 
 @kernel(inline="always")
@@ -110,21 +112,24 @@ def _bias(sep, inv_h, rate, deep, push, msc, isc, use_bias):
 
 
 @kernel(inline="always")
-def _friction(jn, old, mu, mass_t, rta, rtb, vax, vay, wa, vbx, vby, wb, nx, ny, anx, any_, bnx, bny, iia, iib):
-    """One point's friction row: (new impulse, new velocities).  Scalars only: an array argument
-    of an inlined function leaves reference-count calls in the loop, which stop LLVM."""
+def _friction(jn, old, mu, mass_t, rta, rtb, vax, vay, wa, vbx, vby, wb, nx, ny, anx, any_, bnx, bny, iia, iib,
+              late):
+    """One point's friction row: (new impulse, new velocities); none when ``late`` (left to the
+    relax pass: contact_soft.friction_late).  Scalars only: an array argument of an inlined
+    function leaves reference-count calls in the loop, which stop LLVM."""
     vt = -(vbx - vax) * ny + (vby - vay) * nx + wb * rtb - wa * rta
     limit = mu * jn
-    new = min(max(old - mass_t * vt, -limit), limit)
+    new = old if late else min(max(old - mass_t * vt, -limit), limit)
     j = new - old
     return (new, vax + j * any_, vay - j * anx, wa - iia * j * rta, vbx - j * bny, vby + j * bnx,
             wb + iib * j * rtb)
 
 
 @kernel_noalias
-def solve_colour(nb, W_, GA, GB, S, inv_h, push, use_bias, seq):
+def solve_colour(nb, W_, WV, GA, GB, S, inv_h, push, use_bias, fp, seq):
     """One pass over ``nb`` blocks of one colour: per manifold the normal rows (2x2 block or
-    sequential), then friction; ``use_bias`` False is the relax pass; ``seq`` as warm_colour's.
+    sequential), then friction (``fp`` the friction_pass); ``use_bias`` False is the relax pass;
+    ``seq`` as warm_colour's.
     The lane body is written out here, not in a helper: an array passed to an inlined function
     leaves reference-count calls in the loop, and a call stops LLVM from vectorising it."""
     for blk in range(nb):
@@ -135,10 +140,10 @@ def solve_colour(nb, W_, GA, GB, S, inv_h, push, use_bias, seq):
             b = GB[blk * L + l]
             nx = W_[i + W_NX * L]
             ny = W_[i + W_NY * L]
-            ima = W_[i + W_IMA * L]
-            imb = W_[i + W_IMB * L]
-            iia = W_[i + W_IIA * L]
-            iib = W_[i + W_IIB * L]
+            ima = S[a + IM]  # float64, as warm_colour's
+            imb = S[b + IM]
+            iia = S[a + II]
+            iib = S[b + II]
             vax = S[a + VX]
             vay = S[a + VY]
             wa = S[a + W]
@@ -230,33 +235,36 @@ def solve_colour(nb, W_, GA, GB, S, inv_h, push, use_bias, seq):
             wb = wb + iib * (d0 * rnb0 + d1 * rnb1) if done else swb + iib * j * rnb1
             W_[i + W_JN * L] = x0 if done else n0
             W_[i + P1 + W_JN * L] = x1 if done else n1
+            late = friction_late(fp, use_bias, mn1 != 0.0, ima, iia, imb, iib)  # mn1 0: one point
             for q in range(2):  # friction of both points (unrolled: q is 0 or 1)
                 f = i + q * P1
                 jn = W_[f + W_JN * L]
                 W_[f + W_MAXJ * L] = max(W_[f + W_MAXJ * L], jn)
                 jt, vax, vay, wa, vbx, vby, wb = _friction(jn, W_[f + W_JT * L], W_[f + W_MU * L], W_[f + W_MT * L],
                                                            W_[f + W_RTA * L], W_[f + W_RTB * L], vax, vay, wa, vbx,
-                                                           vby, wb, nx, ny, anx, any_, bnx, bny, iia, iib)
+                                                           vby, wb, nx, ny, anx, any_, bnx, bny, iia, iib, late)
                 W_[f + W_JT * L] = jt
-            W_[i + W_VAX * L] = vax
-            W_[i + W_VAY * L] = vay
-            W_[i + W_WA * L] = wa
-            W_[i + W_VBX * L] = vbx
-            W_[i + W_VBY * L] = vby
-            W_[i + W_WB * L] = wb
+            v = blk * V_SIZE + l
+            WV[v + V_VAX * L] = vax
+            WV[v + V_VAY * L] = vay
+            WV[v + V_WA * L] = wa
+            WV[v + V_VBX * L] = vbx
+            WV[v + V_VBY * L] = vby
+            WV[v + V_WB * L] = wb
             if seq is not None:
-                _scatter(blk, l, l + 1, W_, GA, GB, S)
+                _scatter(blk, l, l + 1, WV, GA, GB, S)
         if seq is None:
-            _scatter(blk, 0, L, W_, GA, GB, S)
+            _scatter(blk, 0, L, WV, GA, GB, S)
 
 
 WARM, SOLVE, RELAX = range(3)
 
 
 @kernel
-def coloured_pass(kind, bstart, W_, GA, GB, SB, inv_h, push):
+def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp):
     """One pass (WARM, SOLVE or RELAX) over every colour in solve order (colouring.py's
-    ``bstart``); each colour's blocks handed over as slices that start at 0."""
+    ``bstart``); each colour's blocks handed over as slices that start at 0; ``fp`` the
+    friction_pass."""
     S = SB.reshape(SB.size)  # the body rows as one flat array (row offsets in GA, GB)
     for r in range(COLOURS):
         b0 = bstart[r]
@@ -264,14 +272,15 @@ def coloured_pass(kind, bstart, W_, GA, GB, SB, inv_h, push):
         if b1 == b0:
             continue
         Wc = W_[b0 * BLOCK_SIZE:b1 * BLOCK_SIZE]
+        Vc = WV[b0 * V_SIZE:b1 * V_SIZE]
         ga = GA[b0 * L:b1 * L]
         gb = GB[b0 * L:b1 * L]
         if r == 0:  # the overflow colour (colouring.py: first in solve order): lane after lane
             if kind == WARM:
-                warm_colour(b1 - b0, Wc, ga, gb, S, np.int64(1))
+                warm_colour(b1 - b0, Wc, Vc, ga, gb, S, np.int64(1))
             else:
-                solve_colour(b1 - b0, Wc, ga, gb, S, inv_h, push, kind == SOLVE, np.int64(1))
+                solve_colour(b1 - b0, Wc, Vc, ga, gb, S, inv_h, push, kind == SOLVE, fp, np.int64(1))
         elif kind == WARM:
-            warm_colour(b1 - b0, Wc, ga, gb, S, None)
+            warm_colour(b1 - b0, Wc, Vc, ga, gb, S, None)
         else:
-            solve_colour(b1 - b0, Wc, ga, gb, S, inv_h, push, kind == SOLVE, None)
+            solve_colour(b1 - b0, Wc, Vc, ga, gb, S, inv_h, push, kind == SOLVE, fp, None)

@@ -5,9 +5,11 @@ colour (constraints/colouring.py).  A block is NW fields of LANES values each, a
 one flat array: field f of lane l of block b is ``W[(b * NW + f) * LANES + l]``.  Constant
 strides and one base pointer are what let LLVM turn the lane loop into vector code (a 2-D
 ``[field, slot]`` array never vectorised: ../shared/notes/solver-speed.md).  The fields are the
-scratch rows' (constraints/contact_soft.py, ``R``) that a pass reads or writes, plus the bodies'
-inverse masses (read once per step instead of once per pass) and six slots where a lane leaves
-its bodies' new velocities for the scalar scatter.
+scratch rows' (constraints/contact_soft.py, ``R``) that a pass reads or writes.  A lane leaves
+its bodies' new velocities for the scalar scatter in ``WV``, VW float64 slots per lane laid out
+as the blocks (``WV[(b * VW + v) * LANES + l]``), and reads the inverse masses from the float64
+body rows: velocities and masses kept in float64 keep linear momentum exact (through float32
+slots a pass lost 5e-8 of it, and a squeeze gained 4e-8 of its energy).
 
 ``prepare_wide`` prepares a step's manifolds straight into the blocks (the same terms as
 contact_soft.prepare_contacts, through its helpers) and ``store_wide`` hands the impulses back to
@@ -25,7 +27,7 @@ import math
 import numpy as np
 
 from .._jit import kernel
-from .body_rows import II, IM, NB
+from .body_rows import NB
 from .colouring import LANES
 from .contact_soft import manifold_state, prepared_block, prepared_point, prepared_softness
 from .contact_soft import (BLOCK, INV_DET, JN, JT, K11, K12, K22, KE0 as R_KE0, MASS_N, MASS_T, MAXJ, MU,
@@ -36,9 +38,12 @@ W_RNA, W_RNB, W_RTA, W_RTB, W_MN, W_MT, W_SEP, W_MU, W_VN0, W_MAXJ, W_JN, W_JT =
 PW = 12
 _M = 2 * PW
 (W_NX, W_NY, W_K11, W_K22, W_K12, W_INVDET, W_BLOCK, W_RATE, W_MSC, W_ISC, W_KE0, W_BOUNCY,
- W_IMA, W_IMB, W_IIA, W_IIB, W_VAX, W_VAY, W_WA, W_VBX, W_VBY, W_WB, W_DEEP) = range(_M, _M + 23)
-NW = _M + 23
+ W_DEEP) = range(_M, _M + 13)
+NW = _M + 13
 BLOCK_SIZE = NW * LANES  # floats per block
+V_VAX, V_VAY, V_WA, V_VBX, V_VBY, V_WB = range(6)  # a lane's new velocities in WV
+VW = 6
+V_SIZE = VW * LANES  # WV's floats per block
 
 
 
@@ -51,8 +56,8 @@ def _at(j, f):
 
 
 @kernel
-def pack(C, R, SB, order, slots, pad_row, block_solver, W, GA, GB):
-    """W, GA, GB (body row offsets into the flat SB: row * NB) for the slots 0..slots-1."""
+def pack(C, R, order, slots, pad_row, block_solver, W, GA, GB):
+    """W, GA, GB (body row offsets into the flat body rows: row * NB) for the slots 0..slots-1."""
     for j in range(slots):
         k = order[j]
         o = _at(j, 0)  # field f of slot j at o + f * LANES
@@ -97,10 +102,6 @@ def pack(C, R, SB, order, slots, pad_row, block_solver, W, GA, GB):
         W[o + W_DEEP * LANES] = R[k, DEEPD]
         W[o + W_KE0 * LANES] = R[k, R_KE0]
         W[o + W_BOUNCY * LANES] = 1.0 if C.e[k] != 0.0 else 0.0
-        W[o + W_IMA * LANES] = SB[a, IM]
-        W[o + W_IMB * LANES] = SB[b, IM]
-        W[o + W_IIA * LANES] = SB[a, II]
-        W[o + W_IIB * LANES] = SB[b, II]
 
 
 @kernel(inline="always")
@@ -175,10 +176,6 @@ def prepare_wide(c, p, B, C, order, slots, pad_row, W, GA, GB):
         W[o + W_DEEP * LANES] = deep
         W[o + W_KE0 * LANES] = 0.0  # set by the first biased pass of a bouncy pair; none here
         W[o + W_BOUNCY * LANES] = 0.0
-        W[o + W_IMA * LANES] = ima
-        W[o + W_IMB * LANES] = imb
-        W[o + W_IIA * LANES] = iia
-        W[o + W_IIB * LANES] = iib
 
 
 @kernel

@@ -115,7 +115,7 @@ def _colour(B, C, n, nc, wide):
     that when they are shorter; 0 for the rows layout (``wide`` None)."""
     if wide is None:
         return 0
-    used, order, bstart, overflow, _, GA, _ = wide
+    used, order, bstart, overflow, _, _, GA, _ = wide
     return colour_blocks(B, C, n, nc, used, order, bstart, overflow[0], GA)
 
 
@@ -126,9 +126,9 @@ def _solve(ctx, par, B, C, Sp, R, SB, J, JW, JS, V0, wide):
     of joints that broke."""
     if wide is None:
         return soft_step(ctx, par, B, C, Sp, R, SB, J, JW, JS, V0)
-    _, order, bstart, _, W, GA, GB = wide
+    _, order, bstart, _, W, WV, GA, GB = wide
     slots = bstart[COLOURS] * LANES
-    return soft_step_wide(ctx, par, B, C, Sp, R, SB, J, JW, JS, order, bstart, slots, W, GA, GB)
+    return soft_step_wide(ctx, par, B, C, Sp, R, SB, J, JW, JS, order, bstart, slots, W, WV, GA, GB)
 
 
 @kernel

@@ -41,7 +41,7 @@ def colour_blocks(B, C, n, nc, used, order, bstart, force_overflow, GA):
 
 
 @kernel(entry=True, runtime=True)
-def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart, force_overflow, W, GA,
+def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart, force_overflow, W, WV, GA,
                        GB):
     """One step as kernel.soft_step, the contacts coloured first (colouring.colour_contacts: the
     colours in the table's ``C.colour``, kept from step to step, with the scratch ``used``,
@@ -53,11 +53,11 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
     slots = colour_blocks(B, C, c.n, c.nc, used, order, bstart, force_overflow, GA)
     if slots < 0:
         return slots
-    return soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W, GA, GB)
+    return soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W, WV, GA, GB)
 
 
 @kernel(runtime=True)
-def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W, GA, GB):
+def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W, WV, GA, GB):
     """soft_step_coloured's step once the manifolds are coloured into ``slots`` slots (``order``,
     ``bstart``) and the blocks hold them: the one-call driver colours before the contact tables
     swap, so that a grow of the blocks can still call again."""
@@ -76,7 +76,7 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W,
     gather_bodies(B, n, SB)
     if bouncy:  # restitution works on the rows (contact_wide.py): prepare them, then the blocks
         prepare_contacts(c, p, B, C, R)
-        pack(C, R, SB, order, slots, n + 1, p.block_solver, W, GA, GB)
+        pack(C, R, order, slots, n + 1, p.block_solver, W, GA, GB)
     else:
         prepare_wide(c, p, B, C, order, slots, n + 1, W, GA, GB)
     if J is not None:
@@ -96,11 +96,11 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W,
         integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
         if bouncy:
             save_velocities(SB, n, V0)
-        coloured_pass(warm, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
+        coloured_pass(warm, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass)
         if J is not None:
             warm_start_joints(c, B, J, JW, JS, not fresh)
         for it in range(p.iterations):
-            coloured_pass(solve, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
+            coloured_pass(solve, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass)
             if J is not None:
                 solve_joints(c, B, J, JW, JS, np.bool_(True), p.inv_h, eq_global)
         if S is not None and c.ns > 0:  # last before the move, as kernel.py (S None: no springs)
@@ -112,7 +112,7 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W,
         if project:
             project_joints(c, B, J, JW, JS)
         if p.relax:
-            coloured_pass(relax, bstart, W, GA, GB, SB, p.inv_h, p.push_out_speed)
+            coloured_pass(relax, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass)
             if J is not None:
                 refresh_rows(c, B, J, JW, JS)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, np.bool_(False), p.inv_h, eq_global)

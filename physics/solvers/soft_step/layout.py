@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...constraints.colouring import COLOURS, LANES
-from ...constraints.contact_wide import BLOCK_SIZE
+from ...constraints.contact_wide import BLOCK_SIZE, V_SIZE
 from ...store.table import GENERATION
 from .coloured import soft_step_coloured
 
@@ -35,6 +35,7 @@ class ColouredScratch:
 
     def _wide(self, slots: int) -> None:
         self.W = np.zeros(slots // LANES * BLOCK_SIZE, np.float64 if self.overflow[0] else np.float32)
+        self.WV = np.zeros(slots // LANES * V_SIZE)  # the lanes' new velocities: float64 (contact_wide.py)
         self.GA = np.zeros(slots, np.uint64)
         self.GB = np.zeros(slots, np.uint64)
 
@@ -69,7 +70,7 @@ class ColouredScratch:
 
     def pack_fields(self) -> tuple:
         """The scratch the one-call driver's pack holds (step/soft_driver.py: ``wide``)."""
-        return self.used, self.order, self.bstart, self.overflow, self.W, self.GA, self.GB
+        return self.used, self.order, self.bstart, self.overflow, self.W, self.WV, self.GA, self.GB
 
     def step(self, ctx, par, store, R, SB, J, JW, JS) -> int:
         """The step kernel (it colours first); the number of joints that broke."""
@@ -77,7 +78,7 @@ class ColouredScratch:
         while True:
             out = soft_step_coloured(ctx.array, par.array, store.bodies.view, store.contacts.cur,
                                      store.springs.view, R, SB, J, JW, JS, self.used, self.order,
-                                     self.bstart, self.overflow[0], self.W, self.GA, self.GB)
+                                     self.bstart, self.overflow[0], self.W, self.WV, self.GA, self.GB)
             if out >= 0:
                 return out
             self.grow(-out)  # more slots than the blocks hold: nothing was done yet

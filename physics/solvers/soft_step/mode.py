@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...constraints.body_rows import NB
-from ...constraints.contact_soft import NF
+from ...constraints.contact_soft import FRICTION_PASSES, NF
 from ...constraints.joints.work import after_step, joint_args
 from ...constraints.softness import softness
 from ...settings import Setting, declare
@@ -32,6 +32,11 @@ class SoftStep(SolverMode):
         Setting("restitution_threshold", 1.0, 0.0, 100.0, "impacts slower than this (m/s) do not bounce"),
         Setting("stick_speed", 0.01, 0.0, 10.0, "tangential speed (m/s) below which static friction applies"),
         Setting("block_solver", True, doc="solve the two normal points of a face contact together (no rocking)"),
+        Setting("friction_pass", "faces_in_relax", choices=FRICTION_PASSES,
+                doc="where friction is solved: both (the biased pass and the relax pass), relax (the relax "
+                    "pass only, as Box2D v3), faces_in_relax (relax only for a two-point contact between two "
+                    "moving bodies, both passes for the rest: piles creep least, discs and ground contacts "
+                    "settle as with both)"),
         joint_solver_setting(),
         Setting("joint_projection", False,
                 doc="after each sub-step's move, one Newton step puts each globally solved structure exactly "
@@ -42,12 +47,12 @@ class SoftStep(SolverMode):
         # 1, not Box2D v3's 2: the stiffer drift removal leaves less drift to dissipate (a double
         # pendulum keeps its energy to 0.4 % over 10 s here, 1.6 % at 2; chains hold either way)
         Setting("joint_damping_ratio", 1.0, 0.0, 100.0, "damping ratio of the joint drift removal"),
-        Setting("solver_layout", "rows", choices=LAYOUTS,
-                doc="rows: the contact passes walk the manifolds in table order, one at a time; "
-                    "coloured: graph-coloured (no two manifolds of a colour share a moving body) and "
+        Setting("solver_layout", "coloured", choices=LAYOUTS,
+                doc="coloured: graph-coloured (no two manifolds of a colour share a moving body) and "
                     "solved eight side by side in vector code over float32 blocks, Box2D v3's wide "
-                    "solver (faster on large piles; the Gauss-Seidel order differs, so stacks settle "
-                    "differently: docs/benchmarks.md, 'The coloured layout in the one-call step')"),
+                    "solver, contacts with a fixed body last in each pass; rows: the contact passes "
+                    "walk the manifolds in table order, one at a time in float64 (the Gauss-Seidel "
+                    "order differs, so stacks settle differently: docs/solver-modes.md)"),
     )
     # sub-step length and its inverse; (bias rate, mass scale, impulse scale) of contacts between
     # two moving bodies and of contacts against a body that does not move
