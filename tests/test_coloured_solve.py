@@ -15,7 +15,7 @@ from hypothesis import given, settings, strategies as st
 
 import physics
 from builders import DT, finite, ground, pyramid_world, state_array, state_digest, world
-from physics.constraints.colouring import COLOURS, LANES, OVERFLOW, colour_contacts
+from physics.constraints.colouring import BSTART, COLOURS, COUNT, LANES, OVERFLOW, RUNS, colour_contacts
 
 PROPERTY = settings(derandomize=True, database=None, deadline=None, max_examples=200)
 
@@ -59,7 +59,7 @@ def colour(n, fixed, pairs, force=False, carried=None):
     col = np.full(max(nc, 1), -1, np.int8)  # the contact table's column: -1 for a new pair
     if carried is not None:
         col[:nc] = carried
-    bstart = np.zeros(COLOURS + 1, np.int64)
+    bstart = np.full(BSTART, -9, np.int64)
     slots = colour_contacts(ca, cb, nc, inv_m, inv_i, n, np.zeros(n, np.uint64), col, order, bstart, force)
     return slots, order[:slots], bstart, col[:nc]
 
@@ -69,15 +69,20 @@ def colour(n, fixed, pairs, force=False, carried=None):
 def test_colouring_is_valid(graph):
     n, fixed, pairs = graph
     slots, order, bstart, col = colour(n, fixed, pairs)
-    assert slots % LANES == 0 and bstart[0] == 0 and bstart[-1] * LANES == slots
-    assert np.all(np.diff(bstart) >= 0)
+    assert slots % LANES == 0 and bstart[0] == 0 and bstart[COLOURS] * LANES == slots
+    assert np.all(np.diff(bstart[:COLOURS + 1]) >= 0)
     # every manifold exactly once, the rest padding
     real = order[order >= 0]
     assert sorted(real.tolist()) == list(range(len(pairs)))
     assert np.all((order >= 0) | (order == -1))
+    # the passes visit the colours in use (RUNS) and the real lanes of each one's last block (COUNT)
+    in_use = [r for r in range(COLOURS) if bstart[r + 1] > bstart[r]]
+    assert bstart[RUNS + 1:RUNS + 1 + bstart[RUNS]].tolist() == in_use
     for r in range(COLOURS):
         members = order[bstart[r] * LANES:bstart[r + 1] * LANES]
         members = members[members >= 0]
+        assert bstart[COUNT + (OVERFLOW if r == 0 else r - 1)] == len(members)
+        assert np.all(order[bstart[r] * LANES:bstart[r] * LANES + len(members)] >= 0)  # padding last
         if r == 0:  # the overflow colour, solved first, lane after lane: packed, in the table's order
             assert np.all(col[members] == OVERFLOW)
             assert np.all(np.diff(members) > 0)
@@ -90,7 +95,7 @@ def test_colouring_is_valid(graph):
 
 
 def check_valid(n, fixed, pairs, slots, order, bstart, col):
-    assert slots % LANES == 0 and bstart[0] == 0 and bstart[-1] * LANES == slots
+    assert slots % LANES == 0 and bstart[0] == 0 and bstart[COLOURS] * LANES == slots
     assert sorted(order[order >= 0].tolist()) == list(range(len(pairs)))
     for r in range(1, COLOURS):
         members = order[bstart[r] * LANES:bstart[r + 1] * LANES]
@@ -230,7 +235,7 @@ def test_coloured_kernels_vectorise():
         counts = []
         for jit in (kernel_noalias(cache=False), njit(cache=False)):
             f = jit(k.py_func)
-            f(0, W, WV, G, G, S, *args)
+            f(0, LANES, W, WV, G, G, S, *args)
             asm = next(iter(f.inspect_asm().values()))
             doubles = sum(4 if r == "y" else 8 for r in re.findall(packed_op, asm))
             counts.append((doubles, len(re.findall(r"%[yz]mm\d+", asm)),

@@ -36,6 +36,9 @@ COLOURS = 24                  # B2_GRAPH_COLOR_COUNT
 OVERFLOW = COLOURS - 1        # B2_OVERFLOW_INDEX
 DYNAMIC_COLOURS = COLOURS - 4  # B2_DYNAMIC_COLOR_COUNT
 LANES = 8                     # manifolds per block (contact_wide.py): each colour padded to this
+COUNT = COLOURS + 1           # bstart's manifold counts per colour start here (colour_contacts)
+RUNS = COUNT + 2 * COLOURS    # bstart's number of colours in use, then their solve-order indices
+BSTART = RUNS + 1 + COLOURS   # bstart's length
 
 
 @kernel(inline="always")
@@ -86,13 +89,17 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
     ``order`` (slot -> manifold, -1 for padding; colour by colour, overflow first as Box2D
     solves it first, each colour padded to whole blocks of LANES, the overflow colour's solved
     lane after lane (contact_coloured.py: ``seq``); with ``force_overflow`` every manifold, Box2D's B2_FORCE_OVERFLOW: the table's
-    order, one manifold at a time, as the row solve) and ``bstart`` (COLOURS + 1 block offsets: colour c is blocks
-    bstart[c]..bstart[c + 1], in solve order).  Returns the number of slots used (a multiple
-    of LANES; ``order`` must hold at least nc * LANES).
+    order, one manifold at a time, as the row solve) and ``bstart`` (BSTART long: COLOURS + 1
+    block offsets, the r-th colour in solve order is blocks bstart[r]..bstart[r + 1]; then
+    each colour's manifold count, at COUNT + c; scratch; at RUNS the number of colours in use,
+    then their r in solve order, so a pass visits only those).  Returns the number of slots
+    used (a multiple of LANES; ``order`` must hold at least nc * LANES).
     """
     for i in range(n):
         used[i] = 0
-    count = np.zeros(COLOURS, np.int64)
+    count = bstart[COUNT:COUNT + COLOURS]  # (views into the scratch: no allocation per step)
+    fill = bstart[COUNT + COLOURS:]
+    count[:] = 0
     one = np.uint64(1)
     for sweep in range(2):  # 0: keep the carried colours that are still valid; 1: colour the rest
         for k in range(nc):
@@ -127,17 +134,20 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
             colour[k] = c
             count[c] += 1
     # solve order: the overflow colour first (its blocks lane after lane), then 0, 1, ...
-    first = np.empty(COLOURS, np.int64)  # first slot of each colour
     slot = 0
+    runs = 0
     for r in range(COLOURS):
         c = OVERFLOW if r == 0 else r - 1
         bstart[r] = slot // LANES
-        first[c] = slot
+        fill[c] = slot  # the colour's first slot, then its next free one
         slot += (count[c] + LANES - 1) // LANES * LANES
+        if count[c] > 0:
+            bstart[RUNS + 1 + runs] = r
+            runs += 1
     bstart[COLOURS] = slot // LANES
+    bstart[RUNS] = runs
     for j in range(slot):
         order[j] = -1
-    fill = first.copy()
     for k in range(nc):
         c = colour[k]
         order[fill[c]] = k

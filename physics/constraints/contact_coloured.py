@@ -26,7 +26,7 @@ import numpy as np
 from .._jit import kernel, kernel_noalias
 from .body_rows import (DCOS as _DC, DPX as _DX, DPY as _DY, DSIN as _DS, II as _II, IM as _IM, VX as _VX,
                         VY as _VY, W as _W)
-from .colouring import COLOURS, LANES
+from .colouring import COUNT, LANES, OVERFLOW, RUNS
 from .contact_soft import deep_bias, friction_late
 from .contact_wide import (BLOCK_SIZE, PW, V_SIZE, V_VAX, V_VAY, V_VBX, V_VBY, V_WA, V_WB, W_BLOCK, W_BOUNCY,
                            W_DEEP, W_INVDET, W_ISC, W_JN, W_JT, W_K11, W_K12, W_K22, W_KE0, W_MAXJ, W_MN, W_MSC,
@@ -65,12 +65,14 @@ def _scatter(blk, lo, hi, WV, GA, GB, S):
 
 
 @kernel_noalias
-def warm_colour(nb, W_, WV, GA, GB, S, seq):
-    """Warm start of ``nb`` blocks: every point's accumulated impulses applied.  ``seq`` None:
-    the lanes side by side (one colour); otherwise one after the other (the overflow colour)."""
+def warm_colour(nb, last, W_, WV, GA, GB, S, seq):
+    """Warm start of ``nb`` blocks: every point's accumulated impulses applied (the last block's
+    first ``last`` lanes: the rest are padding).  ``seq`` None: the lanes side by side (one
+    colour); otherwise one after the other (the overflow colour)."""
     for blk in range(nb):
         o = blk * BLOCK_SIZE
-        for l in range(L):
+        m = L if blk + 1 < nb else last  # a run-time trip count: LLVM's vector loop plus a scalar rest
+        for l in range(m):
             i = o + l
             a = GA[blk * L + l]
             b = GB[blk * L + l]
@@ -98,7 +100,7 @@ def warm_colour(nb, W_, WV, GA, GB, S, seq):
             if seq is not None:
                 _scatter(blk, l, l + 1, WV, GA, GB, S)
         if seq is None:
-            _scatter(blk, 0, L, WV, GA, GB, S)
+            _scatter(blk, 0, m, WV, GA, GB, S)
 
 
 @kernel(inline="always")
@@ -126,15 +128,16 @@ def _friction(jn, old, mu, mass_t, rta, rtb, vax, vay, wa, vbx, vby, wb, nx, ny,
 
 
 @kernel_noalias
-def solve_colour(nb, W_, WV, GA, GB, S, inv_h, push, use_bias, fp, seq):
+def solve_colour(nb, last, W_, WV, GA, GB, S, inv_h, push, use_bias, fp, seq):
     """One pass over ``nb`` blocks of one colour: per manifold the normal rows (2x2 block or
     sequential), then friction (``fp`` the friction_pass); ``use_bias`` False is the relax pass;
-    ``seq`` as warm_colour's.
+    ``last`` and ``seq`` as warm_colour's.
     The lane body is written out here, not in a helper: an array passed to an inlined function
     leaves reference-count calls in the loop, and a call stops LLVM from vectorising it."""
     for blk in range(nb):
         o = blk * BLOCK_SIZE
-        for l in range(L):
+        m = L if blk + 1 < nb else last
+        for l in range(m):
             i = o + l
             a = GA[blk * L + l]
             b = GB[blk * L + l]
@@ -254,7 +257,7 @@ def solve_colour(nb, W_, WV, GA, GB, S, inv_h, push, use_bias, fp, seq):
             if seq is not None:
                 _scatter(blk, l, l + 1, WV, GA, GB, S)
         if seq is None:
-            _scatter(blk, 0, L, WV, GA, GB, S)
+            _scatter(blk, 0, m, WV, GA, GB, S)
 
 
 WARM, SOLVE, RELAX = range(3)
@@ -262,25 +265,27 @@ WARM, SOLVE, RELAX = range(3)
 
 @kernel
 def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp):
-    """One pass (WARM, SOLVE or RELAX) over every colour in solve order (colouring.py's
-    ``bstart``); each colour's blocks handed over as slices that start at 0; ``fp`` the
+    """One pass (WARM, SOLVE or RELAX) over the colours in use, in solve order (colouring.py's
+    ``bstart``: the blocks, and the manifold counts that tell how many lanes of a colour's last
+    block are real); each colour's blocks handed over as slices that start at 0; ``fp`` the
     friction_pass."""
     S = SB.reshape(SB.size)  # the body rows as one flat array (row offsets in GA, GB)
-    for r in range(COLOURS):
+    for u in range(bstart[RUNS]):  # the colours in use only (most of the COLOURS are empty)
+        r = bstart[RUNS + 1 + u]
         b0 = bstart[r]
         b1 = bstart[r + 1]
-        if b1 == b0:
-            continue
+        nb = b1 - b0
+        last = bstart[COUNT + (OVERFLOW if r == 0 else r - 1)] - (nb - 1) * L
         Wc = W_[b0 * BLOCK_SIZE:b1 * BLOCK_SIZE]
         Vc = WV[b0 * V_SIZE:b1 * V_SIZE]
         ga = GA[b0 * L:b1 * L]
         gb = GB[b0 * L:b1 * L]
         if r == 0:  # the overflow colour (colouring.py: first in solve order): lane after lane
             if kind == WARM:
-                warm_colour(b1 - b0, Wc, Vc, ga, gb, S, np.int64(1))
+                warm_colour(nb, last, Wc, Vc, ga, gb, S, np.int64(1))
             else:
-                solve_colour(b1 - b0, Wc, Vc, ga, gb, S, inv_h, push, kind == SOLVE, fp, np.int64(1))
+                solve_colour(nb, last, Wc, Vc, ga, gb, S, inv_h, push, kind == SOLVE, fp, np.int64(1))
         elif kind == WARM:
-            warm_colour(b1 - b0, Wc, Vc, ga, gb, S, None)
+            warm_colour(nb, last, Wc, Vc, ga, gb, S, None)
         else:
-            solve_colour(b1 - b0, Wc, Vc, ga, gb, S, inv_h, push, kind == SOLVE, fp, None)
+            solve_colour(nb, last, Wc, Vc, ga, gb, S, inv_h, push, kind == SOLVE, fp, None)

@@ -16,8 +16,8 @@ contact_soft.prepare_contacts, through its helpers) and ``store_wide`` hands the
 the contact table: a step without a bouncy contact never writes the rows ``R``.  Restitution works
 on the rows, so a step with a bouncy contact prepares ``R`` and ``pack`` copies it into the blocks;
 ``unpack`` copies what the passes accumulated (impulses, first-touch speeds, largest impulses,
-energy) back into ``R`` for restitution and the store; ``repack_normal`` takes restitution's
-impulses back.  A padding lane is all zeros (no mass: its impulses stay zero) and reads and
+energy) back into ``R`` for restitution and the store, in a sub-step where ``bounce_due`` finds a
+point that may bounce; ``repack_normal`` takes restitution's impulses back.  A padding lane is all zeros (no mass: its impulses stay zero) and reads and
 writes one spare body row.
 """
 from __future__ import annotations
@@ -216,3 +216,17 @@ def repack_normal(C, R, order, slots, W):
             continue
         for q in range(C.count[k]):
             W[_at(j, q * PW + W_JN)] = R[k, q * PT + JN]
+
+
+@kernel
+def bounce_due(W, slots, threshold):
+    """Whether a bouncy manifold may be due to bounce (contact_restitution._due without its
+    BOUNCED flag, which lives in R): a point that pushed and first touched faster than
+    ``threshold``.  False: restitution would do nothing, so the rows need not be handed over."""
+    for j in range(slots):
+        if W[_at(j, W_BOUNCY)] == 0.0:
+            continue
+        for q in range(2):
+            if W[_at(j, q * PW + W_MAXJ)] > 0.0 and W[_at(j, q * PW + W_VN0)] < -threshold:
+                return True
+    return False

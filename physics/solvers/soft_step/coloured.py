@@ -5,8 +5,8 @@ warm start, solve and relax passes run colour by colour over the wide layout
 The manifolds are prepared straight into the blocks and their impulses stored from them
 (contact_wide.prepare_wide, store_wide).  Restitution works on the row code's scratch ``R``: a
 step with a bouncy contact prepares the rows, packs them into the blocks, and copies what the
-passes accumulated back before restitution (which then hands its impulses back) and before the
-store.  Springs and joints run exactly as in kernel.py, on the same body rows.
+passes accumulated back before restitution (in a sub-step where a point may bounce; it then
+hands its impulses back) and before the store.  Springs and joints run exactly as in kernel.py, on the same body rows.
 """
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ from ...constraints.body_rows import (gather_bodies, integrate_row_positions, in
 from ...constraints.contact_coloured import RELAX, SOLVE, WARM, coloured_pass
 from ...constraints.contact_restitution import restitution_contacts
 from ...constraints.contact_soft import prepare_contacts, store_impulses
-from ...constraints.contact_wide import pack, prepare_wide, repack_normal, store_wide, unpack
+from ...constraints.contact_wide import bounce_due, pack, prepare_wide, repack_normal, store_wide, unpack
 from ...constraints.joints.dispatch import (project_joints, refresh_rows, solve_joints, store_joints,
                                             warm_start_joints)
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
@@ -117,7 +117,8 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W,
                 refresh_rows(c, B, J, JW, JS)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, np.bool_(False), p.inv_h, eq_global)
                 fresh = np.bool_(True)  # nothing moves them before the next sub-step's warm start
-        if bouncy:  # restitution works on the rows: hand them over and take its impulses back
+        if bouncy and bounce_due(W, slots, p.restitution_threshold):
+            # restitution works on the rows: hand them over and take its impulses back
             unpack(C, W, order, slots, R)
             restitution_contacts(c, p, SB, C, R, V0)
             repack_normal(C, R, order, slots, W)

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...constraints.colouring import COLOURS, LANES
+from ...constraints.colouring import BSTART, COLOURS, LANES
 from ...constraints.contact_wide import BLOCK_SIZE, V_SIZE
 from ...store.table import GENERATION
 from .coloured import soft_step_coloured
@@ -30,7 +30,7 @@ class ColouredScratch:
         self.overflow = np.zeros(1, np.bool_)
         self.used = np.zeros(64, np.uint64)
         self.order = np.zeros(64 * LANES, np.int32)
-        self.bstart = np.zeros(COLOURS + 1, np.int64)
+        self.bstart = np.zeros(BSTART, np.int64)
         self._wide(64 * LANES)
 
     def _wide(self, slots: int) -> None:
