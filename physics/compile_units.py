@@ -10,8 +10,8 @@ results are thrown away.  Units share no state, so several processes can fill on
 each with its own units; a later process loads them all from disk.
 
 Unit names: ``broad:<broadphase>``, ``narrow`` (lean), ``narrow:full``, ``solve:<mode>:<integrator>``,
-``joints:<mode>:<integrator>``, ``guard``, ``frame``, ``extras`` (quadtree cells, shape casts),
-``rows`` (soft_step's table-order contact layout, the other one than the default) and ``step:<mode>:<integrator>:<broadphase>[:full][:joints]``.
+``joints:<mode>:<integrator>``, ``guard``, ``frame``, ``extras`` (quadtree cells, shape casts)
+and ``step:<mode>:<integrator>:<broadphase>[:full][:joints]``.
 ``solve``, ``joints`` and ``step`` compile both a world with springs and one without (soft_step
 compiles its spring solve only for the first: store/optional.py), so adding a spring never waits
 (a whole step: whatever the others left, such as the one-call step's variant for a world with
@@ -117,22 +117,6 @@ def _extras():
     w.shape_cast(Circle(0.2), (0.0, 5.0), 0.0, (0.0, -5.0))
 
 
-def _rows():
-    """soft_step's rows contact layout (``solver_layout`` "rows"; the default is "coloured"): its
-    own kernels, through the pipeline and the one-call step."""
-    from .step.one_call import compile_on_demand
-    was = compile_on_demand(True)
-    try:
-        for one_call in (False, True):
-            w = probe_world()
-            w.settings["solver_layout"] = "rows"
-            w._pipeline.one_call.enabled = one_call
-            for _ in range(3):
-                w.step()
-    finally:
-        compile_on_demand(was)
-
-
 def _step(solver, integrator, bp, *flags):
     """Three whole steps of the probe world (``full``: with the whole narrow phase; ``joints``:
     with a joint), so the one-call step's variant for such a world is compiled too; with a
@@ -179,7 +163,7 @@ def _joints(solver, integrator):
 
 
 _UNITS = {"broad": _broad, "narrow": _narrow, "guard": _guard, "solve": _solve, "frame": _frame,
-          "extras": _extras, "rows": _rows, "step": _step, "joints": _joints}
+          "extras": _extras, "step": _step, "joints": _joints}
 
 
 def run_unit(unit: str) -> None:
@@ -224,8 +208,6 @@ def units(world=None, modes=None) -> list[str]:
     out += ["narrow", "narrow:full", "guard", "frame", "broad:brute", "broad:sweep", "broad:quadtree"]
     for m in modes:
         out += [f"joints:{m}:{i}" for i in _integrators(m)]
-    if options.DEFAULT_SOLVER in modes:
-        out.append("rows")
     out.append("extras")
     out += [f"step:{m}:{options.DEFAULT_INTEGRATOR if options.DEFAULT_INTEGRATOR in _integrators(m) else _integrators(m)[0]}:sweep:full"
             for m in modes]
@@ -307,8 +289,6 @@ def chains(todo: list) -> list[list]:
         kind, *args = u.split(":")
         if kind in ("solve", "joints", "step") and args:
             return next((k for k, f in enumerate(_FAMILIES) if args[0] in f), len(_FAMILIES))
-        if kind == "rows":
-            return 0
         return len(_FAMILIES)           # collision, frame and the rest
     groups: dict = {}
     for u in todo:

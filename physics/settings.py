@@ -6,6 +6,7 @@ sliders and the benchmark sweeps.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -21,6 +22,9 @@ class Setting:
     hi: float | None = None
     doc: str = ""
     choices: tuple = ()
+    #: (old, new) pairs: a choice that was removed, read as the one that replaced it (with a
+    #: DeprecationWarning), so that scene files and code written for it keep working
+    legacy: tuple = ()
 
     @property
     def type(self):
@@ -39,6 +43,11 @@ class Setting:
         if t is str:
             if isinstance(value, str) and value in self.choices:
                 return value
+            for old, new in self.legacy:
+                if isinstance(value, str) and value == old:
+                    warnings.warn(f"{who}: {old!r} was removed; it is read as {new!r}", DeprecationWarning,
+                                  stacklevel=3)
+                    return new
             raise ValueError(f"{who} must be one of {list(self.choices)}, got {shown(value)}")
         if not is_number(value):
             raise ValueError(f"{who} must be a number, got {shown(value)}")

@@ -1,11 +1,16 @@
-"""soft_step's ``solver_layout`` "coloured" (issue 17): graph-coloured contact manifolds solved
-eight side by side (physics/constraints/colouring.py, contact_wide.py, contact_coloured.py).
+"""soft_step's contact solve (issue 17): graph-coloured contact manifolds solved eight side by
+side (physics/constraints/colouring.py, contact_wide.py, contact_coloured.py), Box2D v3's
+constraint graph and wide solver.
 
-The kernel is checked against the row solve exactly: with every manifold forced into the
-overflow colour (one manifold per block, in table order) it must reproduce the row solve bit
-for bit, on a stack and on bouncing boxes (the restitution hand-over).  The colouring itself is
-checked as a property on random contact graphs; the physics on the pyramid with the bound of
-tests/test_stacking.py; the vector code by grepping the machine code.
+The wide solve is checked against scalar code exactly, through colouring.py's test flags: every
+colour's lanes solved one after another (scalar code that reads each lane's result before the
+next) must give the side-by-side vector solve's numbers bit for bit, since no two lanes of a
+colour share a moving body; the manifolds prepared through the rows and packed (the path of a
+bouncy step) must give the blocks prepare_wide writes.  Both on a stack and on bouncing boxes
+(the restitution hand-over).  The colouring itself is checked as a property on random contact
+graphs; the physics on the pyramid with the bound of tests/test_stacking.py, also with every
+manifold in the overflow colour (Box2D v3's B2_FORCE_OVERFLOW); the vector code by grepping the
+machine code.
 """
 import re
 
@@ -15,19 +20,27 @@ from hypothesis import given, settings, strategies as st
 
 import physics
 from builders import DT, finite, ground, pyramid_world, state_array, state_digest, world
-from physics.constraints.colouring import BSTART, COLOURS, COUNT, LANES, OVERFLOW, RUNS, colour_contacts
+from physics.constraints.colouring import (BSTART, COLOURS, COUNT, FORCE_OVERFLOW, IN_TURN, LANES, OVERFLOW,
+                                          RUNS, VIA_ROWS, colour_contacts)
 
 PROPERTY = settings(derandomize=True, database=None, deadline=None, max_examples=200)
 
 
-def coloured(w, force_overflow=False):
-    w.settings["solver_layout"] = "coloured"
-    w._mode.coloured.force_overflow = force_overflow
+def coloured(w, force=0):
+    """``w`` with colouring.py's test flags ``force`` (the mode's scratch is the process's: every
+    test sets them)."""
+    w._mode.coloured.force[0] = force
     return w
 
 
-def test_coloured_is_the_default():
-    assert physics.World().settings["solver_layout"] == "coloured"
+def test_coloured_is_the_one_layout_and_rows_reads_as_it():
+    w = physics.World()
+    assert w.settings["solver_layout"] == "coloured"
+    with pytest.warns(DeprecationWarning, match="'rows' was removed"):
+        w.settings["solver_layout"] = "rows"
+    assert w.settings["solver_layout"] == "coloured"
+    with pytest.raises(ValueError, match="solver_layout"):
+        w.settings["solver_layout"] = "columns"
 
 
 def test_contacts_with_a_fixed_body_take_the_highest_free_colour():
@@ -60,7 +73,8 @@ def colour(n, fixed, pairs, force=False, carried=None):
     if carried is not None:
         col[:nc] = carried
     bstart = np.full(BSTART, -9, np.int64)
-    slots = colour_contacts(ca, cb, nc, inv_m, inv_i, n, np.zeros(n, np.uint64), col, order, bstart, force)
+    slots = colour_contacts(ca, cb, nc, inv_m, inv_i, n, np.zeros(n, np.uint64), col, order, bstart,
+                            np.int64(FORCE_OVERFLOW if force else 0))
     return slots, order[:slots], bstart, col[:nc]
 
 
@@ -137,30 +151,28 @@ def test_overflow_when_colours_run_out():
     assert sorted(order[order >= 0].tolist()) == list(range(30))
 
 
-def run_pair(build, steps, **settings_):
-    """(rows state, coloured-forced-overflow state) after ``steps`` steps of ``build()``."""
+def run_pair(build, steps, force, **settings_):
+    """(default state, state with the test flags ``force``) after ``steps`` steps of ``build()``."""
     out = []
-    for force in (False, True):
-        w = build()
+    for f in (0, force):
+        w = coloured(build(), f)
         w.settings.update(settings_)
-        if force:
-            coloured(w, force_overflow=True)
-        else:
-            w.settings["solver_layout"] = "rows"
         for _ in range(steps):
             w.step()
         out.append(state_array(w))
+    coloured(w, 0)
     return out
 
 
-def test_overflow_order_reproduces_the_row_solve_bit_for_bit():
-    rows, col = run_pair(lambda: pyramid_world(10)[0], 120)
-    assert np.array_equal(rows, col)
-    rows, col = run_pair(lambda: pyramid_world(10)[0], 30, block_solver=False, relax=False, substeps=2)
-    assert np.array_equal(rows, col)
+@pytest.mark.parametrize("force", [IN_TURN, VIA_ROWS], ids=["lanes_in_turn", "via_rows"])
+def test_the_wide_solve_equals_scalar_code_bit_for_bit(force):
+    side, turn = run_pair(lambda: pyramid_world(10)[0], 120, force)
+    assert np.array_equal(side, turn)
+    side, turn = run_pair(lambda: pyramid_world(10)[0], 30, force, block_solver=False, relax=False, substeps=2)
+    assert np.array_equal(side, turn)
     for fp in ("both", "relax"):
-        rows, col = run_pair(lambda: pyramid_world(6)[0], 60, friction_pass=fp)
-        assert np.array_equal(rows, col)
+        side, turn = run_pair(lambda: pyramid_world(6)[0], 60, force, friction_pass=fp)
+        assert np.array_equal(side, turn)
 
 
 def bouncing():
@@ -173,10 +185,29 @@ def bouncing():
     return w
 
 
-def test_overflow_order_reproduces_restitution_bit_for_bit():
-    rows, col = run_pair(bouncing, 150)
-    assert np.array_equal(rows, col)
-    assert np.ptp(rows[:, 1]) > 0.0
+def test_lanes_in_turn_reproduce_restitution_bit_for_bit():
+    side, turn = run_pair(bouncing, 150, IN_TURN)
+    assert np.array_equal(side, turn)
+    assert np.ptp(side[:, 1]) > 0.0
+
+
+def test_every_manifold_in_the_overflow_colour_still_holds_a_pyramid():
+    """Box2D v3's B2_FORCE_OVERFLOW: the table's order, one manifold at a time; another
+    Gauss-Seidel order, so other numbers, but the same model: pyramid 10's top box moves less
+    than test_stacking.py's bound for soft_step (0.05 m in 10 s) in 5 s."""
+    w, top = pyramid_world(10)
+    coloured(w, FORCE_OVERFLOW)
+    p0 = np.array(top.position)
+    try:
+        for _ in range(int(round(5.0 / DT))):
+            w.step()
+        assert finite(w) and w._store.contacts.n > 0
+        assert np.all(w._store.contacts.cur.colour[:w._store.contacts.n] == OVERFLOW)
+    finally:
+        coloured(w, 0)
+    d = float(np.hypot(*(np.array(top.position) - p0)))
+    print(f"pyramid 10, every manifold in the overflow colour: top box moved {d:.4f} m")
+    assert d < 0.05
 
 
 def top_drift_coloured(base, steps):

@@ -30,7 +30,7 @@ def test_an_internal_kernel_called_from_python_raises_naming_it():
 
 
 def test_the_core_step_entries_have_wrappers_and_helpers_do_not():
-    from physics.constraints.contact_soft import solve_contacts
+    from physics.constraints.contact_soft import prepare_contacts
     from physics.step.one_call import soft_world_step
     assert not soft_world_step.targetoptions.get("no_cpython_wrapper", False)
-    assert solve_contacts.targetoptions.get("no_cpython_wrapper") is True
+    assert prepare_contacts.targetoptions.get("no_cpython_wrapper") is True

@@ -63,21 +63,6 @@ SCENES = {
 }
 
 
-def _coloured(make):
-    """``make``'s world in soft_step's coloured layout (the driver's ``wide`` scratch)."""
-    def build():
-        w = make()
-        w.settings["solver_layout"] = "coloured"
-        w._mode.coloured.force_overflow = False  # (the mode's scratch is the process's: a test may have set it)
-        return w
-    return build
-
-
-# the coloured layout through the driver: contacts only, growing blocks (pile40), springs and every
-# shape (default), restitution (cradle5: its rows handed to restitution and back), rounded shapes
-SCENES.update({f"{k}_coloured": _coloured(SCENES[k]) for k in ("pile40", "default", "cradle5", "rounded")})
-
-
 def _run(make, driver: bool, steps: int, edit=None):
     """``steps`` steps of a new world through the driver or the pipeline; the number of contact
     begin events seen on the way is kept as ``w.begins``."""
@@ -139,7 +124,8 @@ def test_driver_grows_the_coloured_blocks():
     """The pile starts with every box touching many others: colours run out and each overflow
     manifold takes a block of its own.  The blocks (the mode's, shared by the process's worlds)
     start at one block here, so the driver finds them short and they grow."""
-    w = _coloured(_pile)()
+    w = _pile()
+    w._mode.coloured.force[0] = 0  # (the mode's scratch is the process's: a test may have set it)
     w._mode.coloured._wide(LANES)
     first = len(w._mode.coloured.GA)
     _run(lambda: w, True, 3)

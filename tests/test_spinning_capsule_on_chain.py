@@ -62,7 +62,7 @@ def test_a_spinning_capsule_on_a_stiff_spring_gains_nothing_or_is_refused():
 
 
 def test_soft_step_gains_nothing_at_the_source_in_the_contact_step():
-    """Guard off: soft_step solves the springs after the contacts (solvers/soft_step/kernel.py),
+    """Guard off: soft_step solves the springs after the contacts (solvers/soft_step/coloured.py),
     so the contacts no longer push the capsule along the stiff spring after it was solved: the
     step on the chain ends at 0.2 J from 1.5 J (1360 J when the springs came first).
 

@@ -38,7 +38,14 @@ DYNAMIC_COLOURS = COLOURS - 4  # B2_DYNAMIC_COLOR_COUNT
 LANES = 8                     # manifolds per block (contact_wide.py): each colour padded to this
 COUNT = COLOURS + 1           # bstart's manifold counts per colour start here (colour_contacts)
 RUNS = COUNT + 2 * COLOURS    # bstart's number of colours in use, then their solve-order indices
-BSTART = RUNS + 1 + COLOURS   # bstart's length
+FLAGS = RUNS + 1 + COLOURS    # bstart's copy of the test flags below, for the passes
+BSTART = FLAGS + 1            # bstart's length
+#: test flags (colour_contacts' ``force``): every manifold in the overflow colour (Box2D v3's
+#: B2_FORCE_OVERFLOW: the table's order, one manifold at a time); every colour's lanes solved one
+#: after another instead of side by side (the same numbers, since no two lanes of a colour share
+#: a moving body); the manifolds prepared through the rows ``R`` and packed, the path of a step
+#: with a bouncy contact (the same numbers as prepare_wide)
+FORCE_OVERFLOW, IN_TURN, VIA_ROWS = 1, 2, 4
 
 
 @kernel(inline="always")
@@ -80,26 +87,28 @@ def _kept(c, ma, mb, taken):
 
 
 @kernel(entry=True, runtime=True)
-def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, force_overflow=False):
+def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, force=0):
     """Colour the manifolds 0..nc-1 (bodies ``ca``/``cb``) and lay them out in blocks.
 
     ``used`` (n uint64, scratch): the colours taken at each body.  ``colour[k]`` (in and out,
     the contact table's column): the colour carried from the previous step, -1 for a new pair;
-    a valid one is kept, the others get a free one (the lowest for two moving bodies, the highest with a fixed one).  Writes
-    ``order`` (slot -> manifold, -1 for padding; colour by colour, overflow first as Box2D
-    solves it first, each colour padded to whole blocks of LANES, the overflow colour's solved
-    lane after lane (contact_coloured.py: ``seq``); with ``force_overflow`` every manifold, Box2D's B2_FORCE_OVERFLOW: the table's
-    order, one manifold at a time, as the row solve) and ``bstart`` (BSTART long: COLOURS + 1
-    block offsets, the r-th colour in solve order is blocks bstart[r]..bstart[r + 1]; then
-    each colour's manifold count, at COUNT + c; scratch; at RUNS the number of colours in use,
-    then their r in solve order, so a pass visits only those).  Returns the number of slots
-    used (a multiple of LANES; ``order`` must hold at least nc * LANES).
+    a valid one is kept, the others get a free one (the lowest for two moving bodies, the
+    highest with a fixed one).  ``force``: the test flags above.  Writes ``order`` (slot ->
+    manifold, -1 for padding; colour by colour, overflow first as Box2D solves it first, each
+    colour padded to whole blocks of LANES, the overflow colour's solved lane after lane:
+    contact_coloured.py's ``seq``) and ``bstart`` (BSTART long: COLOURS + 1 block offsets, the
+    r-th colour in solve order is blocks bstart[r]..bstart[r + 1]; each colour's manifold
+    count at COUNT + c; scratch; at RUNS the number of colours in use, then their r in solve
+    order, so a pass visits only those; at FLAGS ``force``).  Returns the number of slots used
+    (a multiple of LANES; ``order`` must hold at least nc * LANES).
     """
     for i in range(n):
         used[i] = 0
     count = bstart[COUNT:COUNT + COLOURS]  # (views into the scratch: no allocation per step)
     fill = bstart[COUNT + COLOURS:]
     count[:] = 0
+    bstart[FLAGS] = force
+    overflow_all = (force & FORCE_OVERFLOW) != 0
     one = np.uint64(1)
     for sweep in range(2):  # 0: keep the carried colours that are still valid; 1: colour the rest
         for k in range(nc):
@@ -110,14 +119,14 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
             taken = (used[a] if ma else np.uint64(0)) | (used[b] if mb else np.uint64(0))
             if sweep == 0:
                 c = np.int64(colour[k])
-                if force_overflow or not _kept(c, ma, mb, taken):
+                if overflow_all or not _kept(c, ma, mb, taken):
                     colour[k] = -1
                     continue
             elif colour[k] >= 0:
                 continue
             else:
                 c = OVERFLOW
-                if force_overflow:
+                if overflow_all:
                     pass
                 elif ma and mb:
                     c = _lowest_free(taken, 0, DYNAMIC_COLOURS)

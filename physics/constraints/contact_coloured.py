@@ -1,23 +1,23 @@
 """The soft contact passes, colour by colour over the wide layout (Box2D v3's
 b2SolveContactTwoPoints / b2WarmStartContactsTask over b2ContactConstraintWide).
 
-The same model as constraints/contact_soft.py, term for term (soft normal rows with bias,
-speculative rows, the 2x2 block solver of constraints/block.py, Coulomb friction, the
-first-touch speeds, largest impulses and pair energy restitution needs), on the blocks of
-constraints/contact_wide.py.  Within a colour no two manifolds share a moving body
-(constraints/colouring.py), so the LANES manifolds of a block are solved side by side: the lane
-loop gathers both bodies' state, solves and leaves the new velocities in float64 slots (``WV``), and a
-second, scalar loop scatters them back.  For the lane loop to become vector code it must be
-straight-line: the block solver's four cases and the sequential fallback are both computed and
-the answer selected (branches on data would stop LLVM), array arguments are noalias
-(_jit.kernel_noalias) and the loops run from 0 over per-colour slices (a ``range(s, e)`` index
-keeps numba's negative-index wraparound in the address, which blocks vectorising).  Measured
-in ../shared/notes/solver-speed.md: ~10 ns per manifold and pass against ~28 for the row solve.
+The model of constraints/contact_soft.py (soft normal rows with bias, speculative rows, the 2x2
+block solver of constraints/block.py, Coulomb friction, the first-touch speeds, largest impulses
+and pair energy restitution needs), on the blocks of constraints/contact_wide.py.  Within a
+colour no two manifolds share a moving body (constraints/colouring.py), so the LANES manifolds
+of a block are solved side by side: the lane loop gathers both bodies' state, solves and leaves
+the new velocities in float64 slots (``WV``), and a second, scalar loop scatters them back.  For
+the lane loop to become vector code it must be straight-line: the block solver's four cases and
+the sequential fallback are both computed and the answer selected (branches on data would stop
+LLVM), array arguments are noalias (_jit.kernel_noalias) and the loops run from 0 over
+per-colour slices (a ``range(s, e)`` index keeps numba's negative-index wraparound in the
+address, which blocks vectorising).  Measured in ../shared/notes/solver-speed.md: ~10 ns per
+manifold and pass against ~28 for a scalar pass over rows.
 
-The order differs from the row solve (colour by colour instead of table order), so the results
-differ from it by Gauss-Seidel's order dependence, not by the model.  A fixed body (inverse mass
-and inertia zero) may appear in several lanes of one colour: every lane writes back its
-unchanged velocity, so the writes agree.
+A pass solves the colours one after another (colouring.py's solve order), so a contact sees
+the impulses of the colours before it (Gauss-Seidel); within a colour the order does not
+matter, since its lanes share no moving body.  A fixed body (inverse mass and inertia zero) may appear in
+several lanes of one colour: every lane writes back its unchanged velocity, so the writes agree.
 """
 from __future__ import annotations
 
@@ -26,7 +26,7 @@ import numpy as np
 from .._jit import kernel, kernel_noalias
 from .body_rows import (DCOS as _DC, DPX as _DX, DPY as _DY, DSIN as _DS, II as _II, IM as _IM, VX as _VX,
                         VY as _VY, W as _W)
-from .colouring import COUNT, LANES, OVERFLOW, RUNS
+from .colouring import COUNT, FLAGS, IN_TURN, LANES, OVERFLOW, RUNS
 from .contact_soft import deep_bias, friction_late
 from .contact_wide import (BLOCK_SIZE, PW, V_SIZE, V_VAX, V_VAY, V_VBX, V_VBY, V_WA, V_WB, W_BLOCK, W_BOUNCY,
                            W_DEEP, W_INVDET, W_ISC, W_JN, W_JT, W_K11, W_K12, W_K22, W_KE0, W_MAXJ, W_MN, W_MSC,
@@ -105,7 +105,7 @@ def warm_colour(nb, last, W_, WV, GA, GB, S, seq):
 
 @kernel(inline="always")
 def _bias(sep, inv_h, rate, deep, push, msc, isc, use_bias):
-    """(bias, mass scale, impulse scale) of one normal row, as contact_soft.solve_contacts."""
+    """(bias, mass scale, impulse scale) of one normal row (contact_soft.py: speculative rows, deep_bias)."""
     spec = sep > 0.0
     if use_bias:
         return (sep * inv_h if spec else max(deep_bias(rate, sep, deep), -push), 1.0 if spec else msc,
@@ -270,6 +270,7 @@ def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp):
     block are real); each colour's blocks handed over as slices that start at 0; ``fp`` the
     friction_pass."""
     S = SB.reshape(SB.size)  # the body rows as one flat array (row offsets in GA, GB)
+    in_turn = (bstart[FLAGS] & IN_TURN) != 0  # (a test flag: every colour lane after lane)
     for u in range(bstart[RUNS]):  # the colours in use only (most of the COLOURS are empty)
         r = bstart[RUNS + 1 + u]
         b0 = bstart[r]
@@ -280,7 +281,7 @@ def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp):
         Vc = WV[b0 * V_SIZE:b1 * V_SIZE]
         ga = GA[b0 * L:b1 * L]
         gb = GB[b0 * L:b1 * L]
-        if r == 0:  # the overflow colour (colouring.py: first in solve order): lane after lane
+        if r == 0 or in_turn:  # the overflow colour (colouring.py: first in solve order): lane after lane
             if kind == WARM:
                 warm_colour(nb, last, Wc, Vc, ga, gb, S, np.int64(1))
             else:

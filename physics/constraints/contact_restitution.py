@@ -7,7 +7,7 @@ the last sub-step.  Two things make that bounce low (issue 18: a 1 m drop at e =
 
 * the body falls on during the step before it touches, so the speed at touch is higher than
   the speed when the step began: here ``VN0`` is the point's normal speed in the sub-step in
-  which it first pushed (after that sub-step's gravity; recorded by ``solve_contacts``);
+  which it first pushed (after that sub-step's gravity; recorded by the biased pass);
 * the body rests on the ground from the touch to the end of the step, and the height it would
   have risen in that time is lost: here the pass runs after every sub-step, on the points that
   pushed for the first time in it, so at most one sub-step is lost, not one step;

@@ -1,46 +1,47 @@
-"""Soft contact rows (Box2D v3 style), laid out for a sub-stepped inner loop.
+"""Soft contact rows (Box2D v3 style): the model, and the prepared rows restitution works on.
 
-The verbs every constraint kind speaks, for contacts: ``prepare_contacts`` (once
-per step), ``warm_start_contacts``, ``solve_contacts`` (with bias; without bias it
-is the relax pass), ``restitution_contacts`` (constraints/contact_restitution.py)
-and ``store_impulses``.  The model:
-soft normal rows with bias (constraints/softness.py), relax, Coulomb friction,
-the 2x2 block solver of constraints/block.py, restitution.  The layout makes a
-sub-step pass cheap:
+The verbs every constraint kind speaks, for contacts: prepare (once per step), warm start,
+solve (with bias; without bias it is the relax pass), restitution
+(constraints/contact_restitution.py) and store.  The passes run colour by colour over the wide
+blocks (constraints/contact_coloured.py, contact_wide.py); this module holds what they share:
+the prepared terms of a point and a manifold (``prepared_point``, ``prepared_softness``,
+``prepared_block``), the deep-overlap bias, the friction pass rule, and the scratch rows ``R``
+(``prepare_contacts``, ``store_impulses``) that restitution reads and writes.  The model: soft
+normal rows with bias (constraints/softness.py), relax, Coulomb friction, the 2x2 block solver
+of constraints/block.py, restitution.
 
-* everything that is fixed for the step is computed once in ``prepare_rows``
-  into one scratch row per manifold (``R``, NF floats): for each point the
-  anchor projections r x n and r . n of both bodies (the tangent is
-  t = (-n_y, n_x), so r x t = r . n), the effective masses, the separation at
-  the start of the step, the friction coefficient in force, and for two-point
-  manifolds the block solver's K matrix and whether it is well conditioned;
-* a pass loads the two bodies' velocities into locals once per manifold, solves
-  both points' normal and friction rows on them and writes them back once;
-* the largest normal impulse of each point (restitution needs to know whether a
-  point pushed this step) is tracked inside the passes, not by an extra loop.
+Everything that is fixed for the step is computed once: for each point the anchor projections
+r x n and r . n of both bodies (the tangent is t = (-n_y, n_x), so r x t = r . n), the effective
+masses, the separation at the start of the step, the friction coefficient in force, and for
+two-point manifolds the block solver's K matrix and whether it is well conditioned.  The
+largest normal impulse of each point (restitution needs to know whether a point pushed this
+step) is tracked inside the passes, not by an extra loop.
 
 With these projections the relative normal speed is
   v_n = (v_b - v_a) . n + w_b (r_b x n) - w_a (r_a x n),
 an impulse j along n changes w_a by -I_a^-1 j (r_a x n), and the separation
 after the bodies moved by (dp, R(dq)) since the step began is
   s = s0 + (dp_b - dp_a) . n + (c_b - 1)(r_b . n) + s_b (r_b x n) - (same for a).
+A point still apart (s > 0) is a speculative row: the bodies may close the gap and no further.
+A biased pass records, for each point that has not pushed yet this step, its normal speed
+before the impulse (``VN0``): once it pushes, that is the speed at first touch (after this
+sub-step's gravity), which restitution reflects.
 
 Arguments: ``c`` the step context record (physics/step/context.py: ``nc``),
 ``p`` the mode's parameter record, which must have ``stick_speed``, ``h``, ``inv_h``,
 ``hertz_dyn``, ``hertz_static`` (contact frequencies, raised per contact by
 constraints/contact_stiffness.py) and ``damping_ratio``, ``push_out_speed``,
-``block_solver``, ``friction_pass`` and ``restitution_threshold``; ``SB`` the body rows
-(constraints/body_rows.py), ``C`` the contact table, ``R`` the rows' scratch.
+``block_solver``, ``friction_pass`` and ``restitution_threshold``; ``B`` the body table,
+``C`` the contact table, ``R`` the rows' scratch.
 """
 from __future__ import annotations
 
 import math
 
 from .._jit import kernel
-from .block import block_mass, solve_block
+from .block import block_mass
 from .contact_stiffness import contact_hertz, moving_size
 from .softness import softness
-from .body_rows import DCOS, DPX, DPY, DSIN, II, IM, VX, VY, W
 
 # per point p the fields start at p * PT
 # VN0: the normal speed just before the point first pushed this step (the speed at first touch:
@@ -177,216 +178,12 @@ def prepare_contacts(c, p, B, C, R):
                 R[k, INV_DET] = inv_det
 
 
-@kernel
-def warm_start_contacts(c, SB, C, R):
-    """Apply the accumulated impulses (normal and friction) of every point."""
-    for k in range(c.nc):
-        a = C.a[k]
-        b = C.b[k]
-        nx = R[k, NX]
-        ny = R[k, NY]
-        px = 0.0
-        py = 0.0
-        aa = 0.0
-        ab = 0.0
-        for q in range(C.count[k]):
-            o = q * PT
-            jn = R[k, o + JN]
-            jt = R[k, o + JT]
-            px += jn * nx - jt * ny
-            py += jn * ny + jt * nx
-            aa += jn * R[k, o + RNA] + jt * R[k, o + RTA]
-            ab += jn * R[k, o + RNB] + jt * R[k, o + RTB]
-        ima = SB[a, IM]
-        imb = SB[b, IM]
-        SB[a, VX] -= ima * px
-        SB[a, VY] -= ima * py
-        SB[a, W] -= SB[a, II] * aa
-        SB[b, VX] += imb * px
-        SB[b, VY] += imb * py
-        SB[b, W] += SB[b, II] * ab
-
-
-@kernel(inline="always")
-def _energy(vx, vy, w, im, ii):
-    """Kinetic energy (J) of a body from its velocities and inverse mass and inertia (0: fixed)."""
-    e = 0.0
-    if im > 0.0:
-        e += 0.5 * (vx * vx + vy * vy) / im
-    if ii > 0.0:
-        e += 0.5 * w * w / ii
-    return e
-
-
 @kernel(inline="always")
 def deep_bias(rate, sep, deep):
     """The soft row's velocity bias at separation ``sep`` < 0: the bias ``rate`` up to ``deep``
     of overlap, DEEP_SOFTEN of it beyond (continuous; written as a max so that the coloured
     solve's lanes stay branch-free)."""
     return rate * max(sep, DEEP_SOFTEN * sep - (1.0 - DEEP_SOFTEN) * deep)
-
-
-@kernel
-def solve_contacts(c, p, SB, C, R, use_bias, track):
-    """One Gauss-Seidel pass over the manifolds: soft normal rows (>= 0), then friction.
-
-    ``use_bias``: the biased pass (overlap pushed out softly); without it the
-    relax pass.  A biased pass also records, for each point that has not pushed
-    yet this step, its normal speed before the impulse (``VN0``): once it pushes,
-    that is the speed at first touch (after this sub-step's gravity), which
-    restitution reflects (constraints/contact_restitution.py).  Speculative points (still apart) are rigid rows that let the
-    bodies close the gap and no further.  With ``p.block_solver`` a two-point
-    manifold whose rows are in the same regime is solved as a 2x2 LCP
-    (constraints/block.py).  ``track``: record each point's largest normal
-    impulse (restitution).
-    """
-    inv_h = p.inv_h
-    push_speed = p.push_out_speed
-    block = p.block_solver
-    for k in range(c.nc):
-        a = C.a[k]
-        b = C.b[k]
-        nx = R[k, NX]
-        ny = R[k, NY]
-        ima = SB[a, IM]
-        imb = SB[b, IM]
-        iia = SB[a, II]
-        iib = SB[b, II]
-        vax = SB[a, VX]
-        vay = SB[a, VY]
-        wa = SB[a, W]
-        vbx = SB[b, VX]
-        vby = SB[b, VY]
-        wb = SB[b, W]
-        # the linear response of each body to a unit impulse along n
-        anx = ima * nx
-        any_ = ima * ny
-        bnx = imb * nx
-        bny = imb * ny
-        if use_bias and C.e[k] != 0.0 and R[k, MAXJ] == 0.0 and R[k, PT + MAXJ] == 0.0:
-            R[k, KE0] = _energy(vax, vay, wa, ima, iia) + _energy(vbx, vby, wb, imb, iib)
-        rate = R[k, SOFT]
-        mscale = R[k, SOFT + 1]
-        iscale = R[k, SOFT + 2]
-        deep = R[k, DEEPD]
-        # displacement of b relative to a since the step began, along n
-        ddn = (SB[b, DPX] - SB[a, DPX]) * nx + (SB[b, DPY] - SB[a, DPY]) * ny
-        cam = SB[a, DCOS] - 1.0
-        cbm = SB[b, DCOS] - 1.0
-        sa = SB[a, DSIN]
-        sb = SB[b, DSIN]
-        cnt = C.count[k]
-        # bias, mass scale and impulse scale of both normal rows in this pass
-        bias0 = 0.0
-        ms0 = 1.0
-        is0 = 0.0
-        bias1 = 0.0
-        ms1 = 1.0
-        is1 = 0.0
-        for q in range(cnt):
-            o = q * PT
-            sep = (R[k, o + SEP0] + ddn + cbm * R[k, o + RTB] + sb * R[k, o + RNB]
-                   - cam * R[k, o + RTA] - sa * R[k, o + RNA])
-            bias = 0.0
-            ms = 1.0
-            isc = 0.0
-            if sep > 0.0:
-                bias = sep * inv_h  # speculative: may approach until touching, no further
-            elif use_bias:
-                bias = max(deep_bias(rate, sep, deep), -push_speed)
-                ms = mscale
-                isc = iscale
-            if q == 0:
-                bias0, ms0, is0 = bias, ms, isc
-            else:
-                bias1, ms1, is1 = bias, ms, isc
-        done = False
-        if block and cnt == 2 and R[k, BLOCK] != 0.0 and ms0 == ms1:
-            rna0 = R[k, RNA]
-            rnb0 = R[k, RNB]
-            rna1 = R[k, PT + RNA]
-            rnb1 = R[k, PT + RNB]
-            k11 = R[k, K11]
-            k22 = R[k, K22]
-            k12 = R[k, K12]
-            old0 = R[k, JN]
-            old1 = R[k, PT + JN]
-            dvn = (vbx - vax) * nx + (vby - vay) * ny
-            v0 = dvn + wb * rnb0 - wa * rna0
-            v1 = dvn + wb * rnb1 - wa * rna1
-            if use_bias and R[k, MAXJ] == 0.0:
-                R[k, VN0] = v0
-            if use_bias and R[k, PT + MAXJ] == 0.0:
-                R[k, PT + VN0] = v1
-            # free speeds (this manifold's impulses removed) plus bias
-            g0 = v0 - (k11 * old0 + k12 * old1) + bias0
-            g1 = v1 - (k12 * old0 + k22 * old1) + bias1
-            done, x0, x1 = solve_block(k11, k12, k22, R[k, INV_DET], R[k, MASS_N], R[k, PT + MASS_N],
-                                       g0, g1, ms0)
-            if done:
-                R[k, JN] = x0
-                R[k, PT + JN] = x1
-                d0 = x0 - old0
-                d1 = x1 - old1
-                d = d0 + d1
-                vax -= d * anx
-                vay -= d * any_
-                wa -= iia * (d0 * rna0 + d1 * rna1)
-                vbx += d * bnx
-                vby += d * bny
-                wb += iib * (d0 * rnb0 + d1 * rnb1)
-        if not done:
-            for q in range(cnt):
-                o = q * PT
-                rna = R[k, o + RNA]
-                rnb = R[k, o + RNB]
-                if q == 0:
-                    bias, ms, isc = bias0, ms0, is0
-                else:
-                    bias, ms, isc = bias1, ms1, is1
-                vn = (vbx - vax) * nx + (vby - vay) * ny + wb * rnb - wa * rna
-                if use_bias and R[k, o + MAXJ] == 0.0:
-                    R[k, o + VN0] = vn
-                old = R[k, o + JN]
-                j = -R[k, o + MASS_N] * ms * (vn + bias) - isc * old
-                new = max(old + j, 0.0)
-                R[k, o + JN] = new
-                j = new - old
-                vax -= j * anx
-                vay -= j * any_
-                wa -= iia * j * rna
-                vbx += j * bnx
-                vby += j * bny
-                wb += iib * j * rnb
-        late = friction_late(p.friction_pass, use_bias, cnt == 2, ima, iia, imb, iib)
-        for q in range(cnt):
-            o = q * PT
-            rta = R[k, o + RTA]
-            rtb = R[k, o + RTB]
-            jn = R[k, o + JN]
-            if track and jn > R[k, o + MAXJ]:
-                R[k, o + MAXJ] = jn
-            if late:
-                continue
-            vt = -(vbx - vax) * ny + (vby - vay) * nx + wb * rtb - wa * rta
-            limit = R[k, o + MU] * jn
-            old = R[k, o + JT]
-            new = min(max(old - R[k, o + MASS_T] * vt, -limit), limit)
-            R[k, o + JT] = new
-            j = new - old
-            # impulse j along t = (-n_y, n_x)
-            vax += j * any_
-            vay -= j * anx
-            wa -= iia * j * rta
-            vbx -= j * bny
-            vby += j * bnx
-            wb += iib * j * rtb
-        SB[a, VX] = vax
-        SB[a, VY] = vay
-        SB[a, W] = wa
-        SB[b, VX] = vbx
-        SB[b, VY] = vby
-        SB[b, W] = wb
 
 
 @kernel(inline="always")

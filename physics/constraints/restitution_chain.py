@@ -48,7 +48,7 @@ ROW_RESTITUTION = 0.5
 @kernel
 def _touching(SB, C, R, k, slop):
     """Whether a point of manifold k pushed in this sub-step or is within ``slop`` of touching
-    where the bodies are now (the separation of contact_soft.solve_contacts)."""
+    where the bodies are now (the separation of contact_soft.py's module doc)."""
     a = C.a[k]
     b = C.b[k]
     ddn = (SB[b, DPX] - SB[a, DPX]) * R[k, NX] + (SB[b, DPY] - SB[a, DPY]) * R[k, NY]

@@ -4,9 +4,8 @@
 driver once per step and does in Python only what compiled code cannot: grow an array and call
 again, raise a refused step, run the user's callbacks.  The Python work per step does not grow
 with the scene.  A world the driver does not cover (another mode, sensors, a user pair filter,
-the quadtree broad phase) steps through the pipeline's stages.  Both of soft_step's layouts
-step in the driver: the coloured one's scratch is the pack's ``wide`` (None for rows, so the
-driver compiled for a rows world holds no coloured code, and the other way round).
+the quadtree broad phase) steps through the pipeline's stages.  The colouring's scratch is the
+pack's ``wide``.
 """
 from __future__ import annotations
 
@@ -22,7 +21,6 @@ from ..collision.narrowphase.kernel import manifold_scratch
 from ..constraints.joints.work import after_step, joint_work
 from ..constraints.rotation_cap import PIVOT_COLUMNS
 from ..errors import SimulationError
-from ..solvers.soft_step.layout import LAYOUTS
 from ..store.table import GENERATION
 from . import soft_driver as drv
 from .energy_bound import E_OUT, LIMIT_OUT
@@ -56,8 +54,6 @@ from .soft_driver import (
     soft_world_step,
 )
 
-_ROWS = LAYOUTS.index("rows")
-_COLOURED = LAYOUTS.index("coloured")
 _BROAD = ("brute", "sweep")  # the broad phases the driver runs (the quadtree steps through the pipeline)
 _NO_LINKS = np.zeros((0, 3), np.int64)
 
@@ -93,7 +89,7 @@ class OneCall:
         self._scratch = None  # the narrow phase's manifold scratch
         self._V0 = None  # soft_step's start-velocity scratch
         self.sweep = None  # the sweep broad phase's scratch in the pack (empty: brute force)
-        self.wide = None  # the coloured layout's scratch in the pack (None: the rows layout)
+        self.wide = None  # the colouring's scratch in the pack
         self._dt = None  # the step length and the mode's settings version the slots were set for
         self._version = None
         self._h = 0.0  # the sub-step the impulses are carried at
@@ -106,8 +102,8 @@ class OneCall:
     @staticmethod
     def usable(world, pl, par) -> bool:
         """Whether the driver covers this world as it is now."""
-        return (world._mode.name == "soft_step" and par.get("solver_layout") in (_ROWS, _COLOURED)
-                and world._pair_filter is None and world._n_sensors == 0 and not pl.events.sensors.active
+        return (world._mode.name == "soft_step" and world._pair_filter is None and world._n_sensors == 0
+                and not pl.events.sensors.active
                 and broadphase.resolve(world.broadphase, world._store.fixtures.n) in _BROAD)
 
     @staticmethod
@@ -133,14 +129,12 @@ class OneCall:
         c = s.contacts
         ck, tr, isl, guard = pl._checkpoint, pl.events.contacts, pl._islands, pl._guard
         ck.ensure(n)
-        if n + 2 > len(mode.SB):  # two more rows: the world, for joints; the padding lanes' (coloured)
+        if n + 2 > len(mode.SB):  # two more rows: the world, for joints; the padding lanes'
             mode._alloc(2 * n + 2)
         if c.capacity > len(mode.R):
             mode.R = np.zeros((c.capacity, mode.R.shape[1]))
-        self.wide = wide = None
-        if pl.params(world).get("solver_layout") == _COLOURED:
-            mode.coloured.ensure(s, c.capacity)  # the driver asks for more room when it needs it
-            self.wide = wide = mode.coloured.pack_fields()
+        mode.coloured.ensure(s, c.capacity)  # the driver asks for more room when it needs it
+        self.wide = wide = mode.coloured.pack_fields()
         tr.scratch(c.capacity)
         if n > len(isl.parent):
             isl.parent = np.zeros(2 * n, dtype=np.int64)

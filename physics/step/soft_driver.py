@@ -24,7 +24,6 @@ from ..collision.narrowphase.kernel import collide_with, sort_pairs
 from ..constraints.joints.kinds import kinds_changed_in
 from ..constraints.colouring import COLOURS, LANES
 from ..solvers.soft_step.coloured import colour_blocks, soft_step_wide
-from ..solvers.soft_step.kernel import soft_step
 from ..store.optional import optional_joints, optional_springs
 from ..store.table_type import make_table
 from .clock import cycles
@@ -112,23 +111,18 @@ def _links(J, nj, out):
 @kernel
 def _colour(B, C, n, nc, wide):
     """coloured.colour_blocks into ``wide``'s scratch: the slots the blocks need this step, minus
-    that when they are shorter; 0 for the rows layout (``wide`` None)."""
-    if wide is None:
-        return 0
-    used, order, bstart, overflow, _, _, GA, _ = wide
-    return colour_blocks(B, C, n, nc, used, order, bstart, overflow[0], GA)
+    that when they are shorter."""
+    used, order, bstart, force, _, _, GA, _ = wide
+    return colour_blocks(B, C, n, nc, used, order, bstart, force[0], GA)
 
 
 @kernel
 def _solve(ctx, par, B, C, Sp, R, SB, J, JW, JS, V0, wide):
-    """The soft step in the world's layout: rows (``wide`` None) or coloured (soft_step_wide over
-    the colouring ``_colour`` left in ``wide``: its blocks end at ``bstart[COLOURS]``); the number
-    of joints that broke."""
-    if wide is None:
-        return soft_step(ctx, par, B, C, Sp, R, SB, J, JW, JS, V0)
+    """The soft step (soft_step_wide) over the colouring ``_colour`` left in ``wide``: its blocks
+    end at ``bstart[COLOURS]``; the number of joints that broke."""
     _, order, bstart, _, W, WV, GA, GB = wide
     slots = bstart[COLOURS] * LANES
-    return soft_step_wide(ctx, par, B, C, Sp, R, SB, J, JW, JS, order, bstart, slots, W, WV, GA, GB)
+    return soft_step_wide(ctx, par, B, C, Sp, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB)
 
 
 @kernel

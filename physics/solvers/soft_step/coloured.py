@@ -1,19 +1,49 @@
-"""``soft_step`` with ``solver_layout`` "coloured": the same step as kernel.py, with the contact
-warm start, solve and relax passes run colour by colour over the wide layout
-(constraints/colouring.py, contact_wide.py, contact_coloured.py), Box2D v3's solver layout.
+"""The ``soft_step`` step: the constraint verbs in Box2D v3's order (solver.c, b2SolverStage),
+the contacts solved colour by colour over the wide layout (Box2D v3's constraint graph and
+wide solver: constraints/colouring.py, contact_wide.py, contact_coloured.py).
+
+Per step: the manifolds are coloured and prepared once; then for each of N sub-steps:
+integrate velocities, warm start, solve contacts softly (with bias), springs, integrate
+positions, relax (solve again without bias so the push-out leaves no velocity behind),
+restitution for the points that first touched in this sub-step
+(constraints/contact_restitution.py; Box2D bounces once per step, after the last sub-step, at
+the speed the step began with).  Finally the impulses are stored for the next step's warm
+start.  Sub-stepping gives the stiffness of a small time step at the price of one narrow phase
+per step (Catto, "Solver2D", 2024).
+
+Springs come last before the move, after the contacts and joints: a stiff spring is solved
+implicitly (constraints/springs/substep.py) so that its stretch after the move is what it
+allows, and a velocity that a later row adds along it is stored as 1/2 k (v h)^2, k h^2 / m
+times that velocity's kinetic energy.  Solved first, the contacts that followed moved a 15 g
+capsule on a 1.2e5 N/m spring against it (k h^2 / m = 2.7e5 at dt 0.74 s) and a step went from
+1.5 J to 1360 J (tests/test_spinning_capsule_on_chain.py); solved last, it ends with 0.2 J.
+A contact the spring then pushes into is pushed out again in the next sub-step, at most at
+push_out_speed.
+
+Joints (``J`` the joint table, ``JW`` their scratch, ``JS`` the global system;
+physics/constraints/joints) are solved after the contacts in each pass, so the equality rows
+hold exactly at the end of a sub-step when they are solved as one system (``joint_solver``
+"global"); with ``joint_projection`` each sub-step's move is followed by one Newton step on the
+positions of the globally solved structures, and the relax pass then makes the velocities
+consistent with the projected positions (RATTLE's order, Andersen 1983).  It holds the joints
+exactly (a 30-link chain whipping for 10 s: 0 mm against 3.4 mm) but removes energy: the relax
+pass takes out the velocity across the projected constraint (a double pendulum lost 30 % of its
+energy in 10 s; projecting once per step instead, 26 %), so it is off by default.  A world
+without joints passes None for all three and the kernel is compiled without them; one without
+springs passes None for ``S`` (store/optional.py).
 
 The manifolds are prepared straight into the blocks and their impulses stored from them
-(contact_wide.prepare_wide, store_wide).  Restitution works on the row code's scratch ``R``: a
-step with a bouncy contact prepares the rows, packs them into the blocks, and copies what the
-passes accumulated back before restitution (in a sub-step where a point may bounce; it then
-hands its impulses back) and before the store.  Springs and joints run exactly as in kernel.py, on the same body rows.
+(contact_wide.prepare_wide, store_wide).  Restitution works on the rows ``R``
+(constraints/contact_soft.py): a step with a bouncy contact prepares the rows, packs them into
+the blocks, and copies what the passes accumulated back before restitution (in a sub-step where
+a point may bounce; it then hands its impulses back) and before the store.
 """
 from __future__ import annotations
 
 import numpy as np
 
 from ..._jit import kernel
-from ...constraints.colouring import colour_contacts
+from ...constraints.colouring import FLAGS, VIA_ROWS, colour_contacts
 from ...constraints.body_rows import (gather_bodies, integrate_row_positions, integrate_row_velocities,
                                       load_velocities, store_velocities)
 from ...constraints.contact_coloured import RELAX, SOLVE, WARM, coloured_pass
@@ -29,38 +59,41 @@ from ...constraints.joints.sync import save_start
 from ...constraints.point import zero_impulses
 from ...constraints.restitution_cluster import save_velocities
 from ...constraints.springs.substep import solve_springs
-from .kernel import GLOBAL
+from ..joint_settings import GLOBAL
 
 
 @kernel
-def colour_blocks(B, C, n, nc, used, order, bstart, force_overflow, GA):
-    """The manifolds coloured (colouring.colour_contacts, the colours in ``C.colour``): the slots
-    the blocks need, or minus that when ``GA`` (the blocks' body offsets) is shorter."""
-    slots = colour_contacts(C.a, C.b, nc, B.inv_m, B.inv_i, n, used, C.colour, order, bstart, force_overflow)
+def colour_blocks(B, C, n, nc, used, order, bstart, force, GA):
+    """The manifolds coloured (colouring.colour_contacts, the colours in ``C.colour``; ``force``
+    its test flags): the slots the blocks need, or minus that when ``GA`` (the blocks' body
+    offsets) is shorter."""
+    slots = colour_contacts(C.a, C.b, nc, B.inv_m, B.inv_i, n, used, C.colour, order, bstart, force)
     return slots if slots <= GA.shape[0] else -slots
 
 
 @kernel(entry=True, runtime=True)
-def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart, force_overflow, W, WV, GA,
-                       GB):
-    """One step as kernel.soft_step, the contacts coloured first (colouring.colour_contacts: the
+def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart, force, W, WV, GA, GB):
+    """One step (see the module doc), the contacts coloured first (colouring.colour_contacts: the
     colours in the table's ``C.colour``, kept from step to step, with the scratch ``used``,
-    ``order``, ``bstart``; ``W``, ``GA``, ``GB`` the blocks' scratch, SB with a spare row at
-    n + 1 for the padding lanes).  Returns the number of joints that broke, or minus the slots
+    ``order``, ``bstart`` and the test flags ``force``; ``W``, ``WV``, ``GA``, ``GB`` the blocks'
+    scratch, SB with a spare row at n + 1 for the padding lanes).  Returns the number of joints that broke, or minus the slots
     needed when GA is too short (nothing changed: call again with larger
     blocks; sized here, the colouring costs no extra call from Python)."""
     c = ctx[0]
-    slots = colour_blocks(B, C, c.n, c.nc, used, order, bstart, force_overflow, GA)
+    slots = colour_blocks(B, C, c.n, c.nc, used, order, bstart, force, GA)
     if slots < 0:
         return slots
-    return soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W, WV, GA, GB)
+    V0 = np.empty((c.n, PIVOT_COLUMNS))
+    return soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB)
 
 
-@kernel(runtime=True)
-def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W, WV, GA, GB):
+@kernel
+def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB):
     """soft_step_coloured's step once the manifolds are coloured into ``slots`` slots (``order``,
     ``bstart``) and the blocks hold them: the one-call driver colours before the contact tables
-    swap, so that a grow of the blocks can still call again."""
+    swap, so that a grow of the blocks can still call again.  ``V0``: scratch of at least n rows
+    of PIVOT_COLUMNS (the sub-step's start velocities, which cap the bounces, and the pivots:
+    rotation_cap.py)."""
     c = ctx[0]
     p = par[0]
     n = c.n
@@ -68,7 +101,7 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W,
     broken = 0
     if not p.warm_starting:
         zero_impulses(C, c.nc)
-    bouncy = False
+    bouncy = (bstart[FLAGS] & VIA_ROWS) != 0  # (a test flag: the rows' path without restitution)
     for k in range(c.nc):
         if C.e[k] != 0.0:
             bouncy = True
@@ -86,12 +119,11 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W,
         save_start(B, n, JW.X0, JW.Q0)
     eq_global = p.joint_solver == GLOBAL
     project = J is not None and eq_global and p.joint_projection
-    V0 = np.empty((n if bouncy or J is not None else 0, PIVOT_COLUMNS))
     if J is not None:
         save_pivots(c, B, J, JW, V0)
     # the pass kinds as plain integers: numba compiles a kernel once per literal argument
     warm, solve, relax = np.int64(WARM), np.int64(SOLVE), np.int64(RELAX)
-    fresh = np.bool_(False)  # the joints' rows are those of the bodies' current positions, as kernel.py
+    fresh = np.bool_(False)  # the joints' rows are those of the bodies' current positions (dispatch.refresh_rows)
     for _ in range(p.substeps):
         integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
         if bouncy:
@@ -103,7 +135,7 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, order, bstart, slots, W,
             coloured_pass(solve, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass)
             if J is not None:
                 solve_joints(c, B, J, JW, JS, np.bool_(True), p.inv_h, eq_global)
-        if S is not None and c.ns > 0:  # last before the move, as kernel.py (S None: no springs)
+        if S is not None and c.ns > 0:  # last before the move (module doc; S None: no springs)
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)

@@ -8,8 +8,7 @@ blocks grow (doubling) for a second call.  Scratch is reused.
 The blocks are float32, as Box2D v3's (b2FloatW): a pass streams every block once, and at
 float64 a large pile's blocks outgrow the cache (suite washer and large_pyramid 11-12 % faster
 a step in float32, docs/benchmarks.md).  The arithmetic stays in float64 where a body's state
-enters it.  The test switch that puts every manifold in the overflow colour keeps float64 blocks:
-that order reproduces the row solve bit for bit (tests/test_coloured_solve.py).
+enters it.  ``force`` holds colouring.py's test flags (tests/test_coloured_solve.py).
 """
 from __future__ import annotations
 
@@ -17,38 +16,26 @@ import numpy as np
 
 from ...constraints.colouring import BSTART, COLOURS, LANES
 from ...constraints.contact_wide import BLOCK_SIZE, V_SIZE
-from ...store.table import GENERATION
 from .coloured import soft_step_coloured
 
-LAYOUTS = ("rows", "coloured")
+LAYOUTS = ("coloured",)  # soft_step's solver_layout choices (mode.py)
 
 
 class ColouredScratch:
     def __init__(self):
-        # every manifold in the overflow colour: the row solve's order (tests); an array, so that the
+        # colouring.py's test flags (FORCE_OVERFLOW, IN_TURN, VIA_ROWS); an array, so that the
         # one-call driver's pack sees a change made after it was built
-        self.overflow = np.zeros(1, np.bool_)
+        self.force = np.zeros(1, np.int64)
         self.used = np.zeros(64, np.uint64)
         self.order = np.zeros(64 * LANES, np.int32)
         self.bstart = np.zeros(BSTART, np.int64)
         self._wide(64 * LANES)
 
     def _wide(self, slots: int) -> None:
-        self.W = np.zeros(slots // LANES * BLOCK_SIZE, np.float64 if self.overflow[0] else np.float32)
+        self.W = np.zeros(slots // LANES * BLOCK_SIZE, np.float32)
         self.WV = np.zeros(slots // LANES * V_SIZE)  # the lanes' new velocities: float64 (contact_wide.py)
         self.GA = np.zeros(slots, np.uint64)
         self.GB = np.zeros(slots, np.uint64)
-
-    @property
-    def force_overflow(self) -> bool:
-        return bool(self.overflow[0])
-
-    @force_overflow.setter
-    def force_overflow(self, on) -> None:
-        if bool(on) != self.overflow[0]:
-            self.overflow[0] = bool(on)
-            self._wide(len(self.GA))  # the blocks in the order's precision (module doc)
-            GENERATION[0] += 1  # a replaced array: the one-call step packs the new blocks
 
     def ensure(self, store, rows: int | None = None) -> None:
         """The colouring's scratch large enough for this step's bodies and ``rows`` manifolds (the
@@ -70,7 +57,7 @@ class ColouredScratch:
 
     def pack_fields(self) -> tuple:
         """The scratch the one-call driver's pack holds (step/soft_driver.py: ``wide``)."""
-        return self.used, self.order, self.bstart, self.overflow, self.W, self.WV, self.GA, self.GB
+        return self.used, self.order, self.bstart, self.force, self.W, self.WV, self.GA, self.GB
 
     def step(self, ctx, par, store, R, SB, J, JW, JS) -> int:
         """The step kernel (it colours first); the number of joints that broke."""
@@ -78,7 +65,7 @@ class ColouredScratch:
         while True:
             out = soft_step_coloured(ctx.array, par.array, store.bodies.view, store.contacts.cur,
                                      store.springs.view, R, SB, J, JW, JS, self.used, self.order,
-                                     self.bstart, self.overflow[0], self.W, self.WV, self.GA, self.GB)
+                                     self.bstart, self.force[0], self.W, self.WV, self.GA, self.GB)
             if out >= 0:
                 return out
             self.grow(-out)  # more slots than the blocks hold: nothing was done yet

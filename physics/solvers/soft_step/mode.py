@@ -1,4 +1,4 @@
-"""``soft_step``'s settings and its place in the pipeline (the kernel is in kernel.py)."""
+"""``soft_step``'s settings and its place in the pipeline (the step kernel is in coloured.py)."""
 from __future__ import annotations
 
 import numpy as np
@@ -9,12 +9,9 @@ from ...constraints.joints.work import after_step, joint_args
 from ...constraints.softness import softness
 from ...settings import Setting, declare
 from ..base import SolverMode
-from ..joint_settings import GLOBAL as _GLOBAL, joint_solver_setting
+from ..joint_settings import joint_solver_setting
 from .fit import fit as fit_substeps
-from .kernel import GLOBAL, soft_step_flat
 from .layout import LAYOUTS, ColouredScratch
-
-assert GLOBAL == _GLOBAL
 
 
 class SoftStep(SolverMode):
@@ -47,12 +44,11 @@ class SoftStep(SolverMode):
         # 1, not Box2D v3's 2: the stiffer drift removal leaves less drift to dissipate (a double
         # pendulum keeps its energy to 0.4 % over 10 s here, 1.6 % at 2; chains hold either way)
         Setting("joint_damping_ratio", 1.0, 0.0, 100.0, "damping ratio of the joint drift removal"),
-        Setting("solver_layout", "coloured", choices=LAYOUTS,
-                doc="coloured: graph-coloured (no two manifolds of a colour share a moving body) and "
-                    "solved eight side by side in vector code over float32 blocks, Box2D v3's wide "
-                    "solver, contacts with a fixed body last in each pass; rows: the contact passes "
-                    "walk the manifolds in table order, one at a time in float64 (the Gauss-Seidel "
-                    "order differs, so stacks settle differently: docs/solver-modes.md)"),
+        Setting("solver_layout", "coloured", choices=LAYOUTS, legacy=(("rows", "coloured"),),
+                doc="coloured: the contacts graph-coloured (no two manifolds of a colour share a moving "
+                    "body) and solved eight side by side in vector code over float32 blocks, Box2D v3's "
+                    "wide solver, contacts with a fixed body last in each pass (the one layout; the "
+                    "former \"rows\", one manifold at a time in table order, is read as coloured)"),
     )
     # sub-step length and its inverse; (bias rate, mass scale, impulse scale) of contacts between
     # two moving bodies and of contacts against a body that does not move
@@ -94,7 +90,7 @@ class SoftStep(SolverMode):
 
     def step(self, ctx, par, store):
         n = store.bodies.n
-        if n + 1 > len(self.SB):  # one more row: the world, for joints
+        if n + 2 > len(self.SB):  # two more rows: the world, for joints; the padding lanes' spare
             self._alloc(2 * n + 2)
         c = store.contacts
         if c.n > len(self.R):
@@ -102,15 +98,7 @@ class SoftStep(SolverMode):
         step = int(ctx.get("step"))
         c.adopt(par.get("h"), step)  # impulses per sub-step; rescaled after a switch
         J, JW, JS = joint_args(store, par.get("h"), step, self.SB)
-        if par.values["solver_layout"] == "rows":
-            JF, JI = store.joints.arrays.flat if J is not None else (None, None)
-            SF, SI = store.springs.arrays.flat if store.springs.n else (None, None)
-            broken = soft_step_flat(ctx.array, par.array, *store.bodies.arrays.flat, *c.cur_cols.flat,
-                                    SF, SI, self.R, self.SB, JF, JI, JW, JS)
-        else:
-            if n + 2 > len(self.SB):  # and a spare row for the padding lanes
-                self._alloc(2 * n + 2)
-            broken = self.coloured.step(ctx, par, store, self.R, self.SB, J, JW, JS)
+        broken = self.coloured.step(ctx, par, store, self.R, self.SB, J, JW, JS)
         if J is not None:
             after_step(store, broken)
 
@@ -118,7 +106,7 @@ class SoftStep(SolverMode):
         return fit_substeps(world)  # more sub-steps for thin or small bodies (fit.py)
 
     def push_speed(self, values):
-        # the biased rows target at most this separation speed (contact_soft.solve_contacts);
+        # the biased rows target at most this separation speed (contact_coloured.solve_colour);
         # the relax pass then takes it out again, but with relax off it stays
         return float(values["push_out_speed"])
 
