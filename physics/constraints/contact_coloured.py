@@ -66,12 +66,15 @@ def _scatter(blk, lo, hi, WV, GA, GB, S):
 
 @kernel_noalias
 def warm_colour(nb, last, W_, WV, GA, GB, S, seq):
-    """Warm start of ``nb`` blocks: every point's accumulated impulses applied (the last block's
-    first ``last`` lanes: the rest are padding).  ``seq`` None: the lanes side by side (one
-    colour); otherwise one after the other (the overflow colour)."""
+    """Warm start of ``nb`` blocks: every point's accumulated impulses applied.  ``seq`` None:
+    the lanes side by side (one colour's full blocks; padding lanes are all zeros and change
+    nothing); otherwise one after the other (the overflow colour, or a colour's last block that
+    padding fills in part), and of the last block only its first ``last`` lanes."""
     for blk in range(nb):
         o = blk * BLOCK_SIZE
-        m = L if blk + 1 < nb else last  # a run-time trip count: LLVM's vector loop plus a scalar rest
+        m = L  # side by side: every lane (a constant trip count, one straight vector loop)
+        if seq is not None and blk + 1 == nb:
+            m = last  # lane after lane: the last block's real lanes only (numba prunes this for None)
         for l in range(m):
             i = o + l
             a = GA[blk * L + l]
@@ -136,7 +139,9 @@ def solve_colour(nb, last, W_, WV, GA, GB, S, inv_h, push, use_bias, fp, seq):
     leaves reference-count calls in the loop, and a call stops LLVM from vectorising it."""
     for blk in range(nb):
         o = blk * BLOCK_SIZE
-        m = L if blk + 1 < nb else last
+        m = L  # as warm_colour's
+        if seq is not None and blk + 1 == nb:
+            m = last
         for l in range(m):
             i = o + l
             a = GA[blk * L + l]
@@ -267,26 +272,36 @@ WARM, SOLVE, RELAX = range(3)
 def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp):
     """One pass (WARM, SOLVE or RELAX) over the colours in use, in solve order (colouring.py's
     ``bstart``: the blocks, and the manifold counts that tell how many lanes of a colour's last
-    block are real); each colour's blocks handed over as slices that start at 0; ``fp`` the
-    friction_pass."""
+    block are real); ``fp`` the friction_pass.  A colour's full blocks are solved side by side
+    in vector code; a last block that padding fills in part lane after lane over its real lanes
+    only (the same numbers: its lanes share no moving body), so a small scene does not pay for
+    eight lanes per manifold."""
     S = SB.reshape(SB.size)  # the body rows as one flat array (row offsets in GA, GB)
     in_turn = (bstart[FLAGS] & IN_TURN) != 0  # (a test flag: every colour lane after lane)
     for u in range(bstart[RUNS]):  # the colours in use only (most of the COLOURS are empty)
         r = bstart[RUNS + 1 + u]
         b0 = bstart[r]
         b1 = bstart[r + 1]
-        nb = b1 - b0
-        last = bstart[COUNT + (OVERFLOW if r == 0 else r - 1)] - (nb - 1) * L
-        Wc = W_[b0 * BLOCK_SIZE:b1 * BLOCK_SIZE]
-        Vc = WV[b0 * V_SIZE:b1 * V_SIZE]
-        ga = GA[b0 * L:b1 * L]
-        gb = GB[b0 * L:b1 * L]
+        last = bstart[COUNT + (OVERFLOW if r == 0 else r - 1)] - (b1 - b0 - 1) * L
         if r == 0 or in_turn:  # the overflow colour (colouring.py: first in solve order): lane after lane
-            if kind == WARM:
-                warm_colour(nb, last, Wc, Vc, ga, gb, S, np.int64(1))
-            else:
-                solve_colour(nb, last, Wc, Vc, ga, gb, S, inv_h, push, kind == SOLVE, fp, np.int64(1))
-        elif kind == WARM:
-            warm_colour(nb, last, Wc, Vc, ga, gb, S, None)
-        else:
-            solve_colour(nb, last, Wc, Vc, ga, gb, S, inv_h, push, kind == SOLVE, fp, None)
+            _blocks(kind, b0, b1, last, W_, WV, GA, GB, S, inv_h, push, fp, np.int64(1))
+            continue
+        bf = b1 if last == L else b1 - 1  # the full blocks
+        if bf > b0:
+            _blocks(kind, b0, bf, L, W_, WV, GA, GB, S, inv_h, push, fp, None)
+        if bf < b1:
+            _blocks(kind, bf, b1, last, W_, WV, GA, GB, S, inv_h, push, fp, np.int64(1))
+
+
+@kernel
+def _blocks(kind, b0, b1, last, W_, WV, GA, GB, S, inv_h, push, fp, seq):
+    """Blocks b0..b1-1 of one colour, handed over as slices that start at 0 (``seq``, ``last``:
+    warm_colour's)."""
+    Wc = W_[b0 * BLOCK_SIZE:b1 * BLOCK_SIZE]
+    Vc = WV[b0 * V_SIZE:b1 * V_SIZE]
+    ga = GA[b0 * L:b1 * L]
+    gb = GB[b0 * L:b1 * L]
+    if kind == WARM:
+        warm_colour(b1 - b0, last, Wc, Vc, ga, gb, S, seq)
+    else:
+        solve_colour(b1 - b0, last, Wc, Vc, ga, gb, S, inv_h, push, kind == SOLVE, fp, seq)
