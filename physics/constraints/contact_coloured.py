@@ -288,7 +288,7 @@ def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp):
             continue
         bf = b1 if last == L else b1 - 1  # the full blocks
         if bf > b0:
-            _blocks(kind, b0, bf, L, W_, WV, GA, GB, S, inv_h, push, fp, None)
+            _blocks(kind, b0, bf, np.int64(L), W_, WV, GA, GB, S, inv_h, push, fp, None)
         if bf < b1:
             _blocks(kind, bf, b1, last, W_, WV, GA, GB, S, inv_h, push, fp, np.int64(1))
 
