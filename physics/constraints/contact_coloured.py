@@ -67,9 +67,9 @@ def _scatter(blk, lo, hi, WV, GA, GB, S):
 @kernel_noalias
 def warm_colour(nb, last, W_, WV, GA, GB, S, seq):
     """Warm start of ``nb`` blocks: every point's accumulated impulses applied.  ``seq`` None:
-    the lanes side by side (one colour's full blocks; padding lanes are all zeros and change
-    nothing); otherwise one after the other (the overflow colour, or a colour's last block that
-    padding fills in part), and of the last block only its first ``last`` lanes."""
+    the lanes side by side (one colour's full blocks); otherwise one after the other (the
+    overflow colour, or a colour's last block that padding fills in part), and of the last block
+    only its first ``last`` lanes (padding lanes hold nothing: contact_wide.py)."""
     for blk in range(nb):
         o = blk * BLOCK_SIZE
         m = L  # side by side: every lane (a constant trip count, one straight vector loop)

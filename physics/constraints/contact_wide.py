@@ -17,8 +17,9 @@ the contact table: a step without a bouncy contact never writes the rows ``R``. 
 on the rows, so a step with a bouncy contact prepares ``R`` and ``pack`` copies it into the blocks;
 ``unpack`` copies what the passes accumulated (impulses, first-touch speeds, largest impulses,
 energy) back into ``R`` for restitution and the store, in a sub-step where ``bounce_due`` finds a
-point that may bounce; ``repack_normal`` takes restitution's impulses back.  A padding lane is all zeros (no mass: its impulses stay zero) and reads and
-writes one spare body row.
+point that may bounce; ``repack_normal`` takes restitution's impulses back.  Padding lanes
+(``order`` -1, only in a colour's last block) are never written or read: the passes solve a last
+block over its real lanes only (contact_coloured.coloured_pass).
 """
 from __future__ import annotations
 
@@ -56,14 +57,13 @@ def _at(j, f):
 
 
 @kernel
-def pack(C, R, order, slots, pad_row, block_solver, W, GA, GB):
+def pack(C, R, order, slots, block_solver, W, GA, GB):
     """W, GA, GB (body row offsets into the flat body rows: row * NB) for the slots 0..slots-1."""
     for j in range(slots):
         k = order[j]
-        o = _at(j, 0)  # field f of slot j at o + f * LANES
-        if k < 0:
-            _pad(W, GA, GB, j, o, pad_row)
+        if k < 0:  # padding
             continue
+        o = _at(j, 0)  # field f of slot j at o + f * LANES
         a = C.a[k]
         b = C.b[k]
         GA[j] = a * NB
@@ -105,15 +105,6 @@ def pack(C, R, order, slots, pad_row, block_solver, W, GA, GB):
 
 
 @kernel(inline="always")
-def _pad(W, GA, GB, j, o, pad_row):
-    """Slot j (its fields at o + f * LANES) a padding lane."""
-    for f in range(NW):
-        W[o + f * LANES] = 0.0
-    GA[j] = pad_row * NB
-    GB[j] = pad_row * NB
-
-
-@kernel(inline="always")
 def _point(W, po, C, k, q, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed):
     """Point q of manifold k prepared into its fields at po + f * LANES; returns its arms across
     the normal (r_a x n, r_b x n) for the block solver."""
@@ -135,17 +126,16 @@ def _point(W, po, C, k, q, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvt
 
 
 @kernel
-def prepare_wide(c, p, B, C, order, slots, pad_row, W, GA, GB):
+def prepare_wide(c, p, B, C, order, slots, W, GA, GB):
     """W, GA, GB for the slots 0..slots-1 from the manifolds and the bodies at the start of the
     step: what ``prepare_contacts`` then ``pack`` leave there, without the rows between."""
     stick_speed = p.stick_speed
     g = math.hypot(c.gx, c.gy)
     for j in range(slots):
         k = order[j]
-        o = _at(j, 0)  # field f of slot j at o + f * LANES
-        if k < 0:
-            _pad(W, GA, GB, j, o, pad_row)
+        if k < 0:  # padding
             continue
+        o = _at(j, 0)  # field f of slot j at o + f * LANES
         a, b, nx, ny, ima, imb, iia, iib, wa, wb, dvnx, dvtx = manifold_state(B, C, k)
         GA[j] = a * NB
         GB[j] = b * NB
@@ -219,12 +209,12 @@ def repack_normal(C, R, order, slots, W):
 
 
 @kernel
-def bounce_due(W, slots, threshold):
+def bounce_due(W, order, slots, threshold):
     """Whether a bouncy manifold may be due to bounce (contact_restitution._due without its
     BOUNCED flag, which lives in R): a point that pushed and first touched faster than
     ``threshold``.  False: restitution would do nothing, so the rows need not be handed over."""
     for j in range(slots):
-        if W[_at(j, W_BOUNCY)] == 0.0:
+        if order[j] < 0 or W[_at(j, W_BOUNCY)] == 0.0:
             continue
         for q in range(2):
             if W[_at(j, q * PW + W_MAXJ)] > 0.0 and W[_at(j, q * PW + W_VN0)] < -threshold:

@@ -129,7 +129,7 @@ class OneCall:
         c = s.contacts
         ck, tr, isl, guard = pl._checkpoint, pl.events.contacts, pl._islands, pl._guard
         ck.ensure(n)
-        if n + 2 > len(mode.SB):  # two more rows: the world, for joints; the padding lanes'
+        if n + 1 > len(mode.SB):  # one more row: the world, for joints
             mode._alloc(2 * n + 2)
         if c.capacity > len(mode.R):
             mode.R = np.zeros((c.capacity, mode.R.shape[1]))

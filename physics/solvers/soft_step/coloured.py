@@ -76,9 +76,9 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
     """One step (see the module doc), the contacts coloured first (colouring.colour_contacts: the
     colours in the table's ``C.colour``, kept from step to step, with the scratch ``used``,
     ``order``, ``bstart`` and the test flags ``force``; ``W``, ``WV``, ``GA``, ``GB`` the blocks'
-    scratch, SB with a spare row at n + 1 for the padding lanes).  Returns the number of joints that broke, or minus the slots
-    needed when GA is too short (nothing changed: call again with larger
-    blocks; sized here, the colouring costs no extra call from Python)."""
+    scratch).  Returns the number of joints that broke, or minus the slots needed when GA is too
+    short (nothing changed: call again with larger blocks; sized here, the colouring costs no
+    extra call from Python)."""
     c = ctx[0]
     slots = colour_blocks(B, C, c.n, c.nc, used, order, bstart, force, GA)
     if slots < 0:
@@ -109,9 +109,9 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
     gather_bodies(B, n, SB)
     if bouncy:  # restitution works on the rows (contact_wide.py): prepare them, then the blocks
         prepare_contacts(c, p, B, C, R)
-        pack(C, R, order, slots, n + 1, p.block_solver, W, GA, GB)
+        pack(C, R, order, slots, p.block_solver, W, GA, GB)
     else:
-        prepare_wide(c, p, B, C, order, slots, n + 1, W, GA, GB)
+        prepare_wide(c, p, B, C, order, slots, W, GA, GB)
     if J is not None:
         if not p.warm_starting:
             zero_joint_impulses(J, c.nj)
@@ -149,7 +149,7 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
                 refresh_rows(c, B, J, JW, JS)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, np.bool_(False), p.inv_h, eq_global)
                 fresh = np.bool_(True)  # nothing moves them before the next sub-step's warm start
-        if bouncy and bounce_due(W, slots, p.restitution_threshold):
+        if bouncy and bounce_due(W, order, slots, p.restitution_threshold):
             # restitution works on the rows: hand them over and take its impulses back
             unpack(C, W, order, slots, R)
             restitution_contacts(c, p, SB, C, R, V0)

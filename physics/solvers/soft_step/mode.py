@@ -90,7 +90,7 @@ class SoftStep(SolverMode):
 
     def step(self, ctx, par, store):
         n = store.bodies.n
-        if n + 2 > len(self.SB):  # two more rows: the world, for joints; the padding lanes' spare
+        if n + 1 > len(self.SB):  # one more row: the world, for joints
             self._alloc(2 * n + 2)
         c = store.contacts
         if c.n > len(self.R):
