@@ -117,15 +117,6 @@ def _colour(B, C, n, nc, wide):
 
 
 @kernel
-def _solve(ctx, par, B, C, Sp, R, SB, J, JW, JS, V0, wide):
-    """The soft step (soft_step_wide) over the colouring ``_colour`` left in ``wide``: its blocks
-    end at ``bstart[COLOURS]``; the number of joints that broke."""
-    _, order, bstart, _, W, WV, GA, GB = wide
-    slots = bstart[COLOURS] * LANES
-    return soft_step_wide(ctx, par, B, C, Sp, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB)
-
-
-@kernel
 def _scale_impulses(C, nc, r):
     """ContactBuffer.adopt: the carried impulses times ``r``."""
     if r != 1.0:
@@ -202,7 +193,10 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     T[3] = cycles()
     _scale_impulses(C, nc, D[D_CADOPT])
     _scale_joint_impulses(J, nj, D[D_JADOPT])
-    S[S_BROKEN] = _solve(ctx, par, B, C, optional_springs(SS, SI), R, SB, J, JW, JS, V0, wide)
+    # the soft step over the colouring _colour left in ``wide``: its blocks end at bstart[COLOURS]
+    _, order, bstart, _, W, WV, GA, GB = wide
+    S[S_BROKEN] = soft_step_wide(ctx, par, B, C, optional_springs(SS, SI), R, SB, J, JW, JS, V0, order, bstart,
+                                 bstart[COLOURS] * LANES, W, WV, GA, GB)
     T[4] = cycles()
     if S[S_SLEEP]:
         S[S_NAWAKE] = update_islands(ctx, B, C, Sp, links[:_links(J, nj, links)], parent, min_t, label)
