@@ -70,6 +70,10 @@ def kernel(fn=None, *, runtime: bool = False, entry: bool = False, **kw):
     compiled first.  ``python -m physics precompile`` refuses a runtime-free kernel that returns an
     array (compile_checks.py): its caller would release a reference it was never given.
 
+    ``forceinline=True``: LLVM inlines it wherever a caller links it (numba's option: the function
+    is marked ``alwaysinline``).  It is still typed once per signature, as numba's IR-level
+    ``inline="always"`` is not (that one types the body again at every call site).
+
     ``entry``: Python calls it.  Only entries get numba's Python wrapper (the code that unboxes
     every argument, for a table namedtuple some 26 arrays); every other kernel is compiled
     without it and without the C-callable wrapper, which took about a third of a cold compile

@@ -8,7 +8,7 @@ import math
 from .._jit import kernel
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def may_touch(B, a, b, dt, spec):
     """Can the bounding circles come within ``spec`` during the step (linear motion)?
 

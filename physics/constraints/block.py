@@ -20,7 +20,7 @@ from .._jit import kernel
 MAX_CONDITION = 1000.0  # k11^2 / det above this: the points are (nearly) redundant
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def block_mass(k11, k12, k22):
     """(well conditioned, 1 / det K) of K = [[k11, k12], [k12, k22]]."""
     det = k11 * k22 - k12 * k12
@@ -29,7 +29,7 @@ def block_mass(k11, k12, k22):
     return False, 0.0
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def solve_block(k11, k12, k22, inv_det, inv_k11, inv_k22, g0, g1, ms):
     """(solved, lambda0, lambda1) of the 2x2 LCP with free speeds g (bias included).
 

@@ -48,7 +48,7 @@ BSTART = FLAGS + 1            # bstart's length
 FORCE_OVERFLOW, IN_TURN, VIA_ROWS = 1, 2, 4
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _lowest_free(taken, lo, hi):
     """The lowest colour in lo..hi-1 not in the bit set ``taken``; OVERFLOW when none is."""
     one = np.uint64(1)
@@ -62,7 +62,7 @@ def _lowest_free(taken, lo, hi):
     return c
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _highest_free(taken, lo, hi):
     """The highest colour in lo..hi-1 not in the bit set ``taken``; OVERFLOW when none is."""
     one = np.uint64(1)
@@ -74,7 +74,7 @@ def _highest_free(taken, lo, hi):
     return OVERFLOW
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _kept(c, ma, mb, taken):
     """May a manifold keep its carried colour ``c``: in the range of its kind, free at its bodies?"""
     if c < 0 or c == OVERFLOW:

@@ -39,14 +39,14 @@ L = LANES
 P1 = PW * L  # offset of the second point's fields
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _energy(vx, vy, w, im, ii):
     """Kinetic energy of a body (0 for a fixed one), as contact_soft._energy, without branches."""
     e = 0.5 * (vx * vx + vy * vy) / im if im > 0.0 else 0.0
     return e + (0.5 * w * w / ii if ii > 0.0 else 0.0)
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _scatter(blk, lo, hi, WV, GA, GB, S):
     """The new velocities of lanes lo..hi-1 of block ``blk`` (in ``WV``) back into the body rows
     (scalar stores), before the next block reads them; lane by lane in the overflow colour, whose
@@ -106,7 +106,7 @@ def warm_colour(nb, last, W_, WV, GA, GB, S, seq):
             _scatter(blk, 0, m, WV, GA, GB, S)
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _bias(sep, inv_h, rate, deep, push, msc, isc, use_bias):
     """(bias, mass scale, impulse scale) of one normal row (contact_soft.py: speculative rows, deep_bias)."""
     spec = sep > 0.0
@@ -116,7 +116,7 @@ def _bias(sep, inv_h, rate, deep, push, msc, isc, use_bias):
     return sep * inv_h if spec else 0.0, 1.0, 0.0
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _friction(jn, old, mu, mass_t, rta, rtb, vax, vay, wa, vbx, vby, wb, nx, ny, anx, any_, bnx, bny, iia, iib,
               late):
     """One point's friction row: (new impulse, new velocities); none when ``late`` (left to the

@@ -69,7 +69,7 @@ def restitution_contacts(c, p, SB, C, R, V0):
     cap_clusters(SB, C, nc, n, R, due, V0, VR, J0)
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _due(R, k, o, threshold):
     return R[k, o + BOUNCED] == 0.0 and R[k, o + MAXJ] > 0.0 and R[k, o + VN0] < -threshold
 

@@ -81,7 +81,7 @@ DEEPD = K11 + 12  # this manifold's deep-overlap depth (m): DEEP x the smaller m
 NF = K11 + 13
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def manifold_state(B, C, k):
     """(a, b, n_x, n_y, 1/m_a, 1/m_b, 1/I_a, 1/I_b, w_a, w_b, (v_b - v_a) . n, (v_b - v_a) . t) of
     manifold k at the start of the step."""
@@ -95,7 +95,7 @@ def manifold_state(B, C, k):
             -dvx * ny + dvy * nx)
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def prepared_point(C, k, q, xax, xay, xbx, xby, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed):
     """Point q of manifold k at the start of the step: (r_a x n, r_b x n, r_a . n, r_b . n, normal
     mass, tangent mass, separation, normal speed, friction coefficient); the module doc's terms."""
@@ -116,7 +116,7 @@ def prepared_point(C, k, q, xax, xay, xbx, xby, nx, ny, ima, imb, iia, iib, dvnx
             dvnx + wb * rnb - wa * rna, mu)
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def prepared_softness(p, B, C, k, a, b, ima, imb, g):
     """(rigid, bias rate, mass scale, impulse scale, deep-overlap depth) of manifold k
     (constraints/contact_stiffness.py, softness.py)."""
@@ -129,7 +129,7 @@ def prepared_softness(p, B, C, k, a, b, ima, imb, g):
     return rigid, rate, mscale, iscale, DEEP * moving_size(ima, imb, B.bound_r[a], B.bound_r[b])
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def prepared_block(ima, imb, iia, iib, ra0, rb0, ra1, rb1):
     """(k11, k22, k12, well conditioned, 1 / det K) of a two-point manifold (constraints/block.py)."""
     im = ima + imb
@@ -178,7 +178,7 @@ def prepare_contacts(c, p, B, C, R):
                 R[k, INV_DET] = inv_det
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def deep_bias(rate, sep, deep):
     """The soft row's velocity bias at separation ``sep`` < 0: the bias ``rate`` up to ``deep``
     of overlap, DEEP_SOFTEN of it beyond (continuous; written as a max so that the coloured
@@ -186,7 +186,7 @@ def deep_bias(rate, sep, deep):
     return rate * max(sep, DEEP_SOFTEN * sep - (1.0 - DEEP_SOFTEN) * deep)
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def friction_late(fp, use_bias, two, ima, iia, imb, iib):
     """Does a manifold leave its friction rows to the relax pass (``fp`` the friction_pass)?  In
     the biased pass (``use_bias``) with "relax", or with "faces_in_relax" for a two-point

@@ -48,7 +48,7 @@ V_SIZE = VW * LANES  # WV's floats per block
 
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _at(j, f):
     """Index of field f of slot j (j >= 0: unsigned arithmetic, no floor-division fix-ups)."""
     u = np.uint64(j)
@@ -104,7 +104,7 @@ def pack(C, R, order, slots, block_solver, W, GA, GB):
         W[o + W_BOUNCY * LANES] = 1.0 if C.e[k] != 0.0 else 0.0
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _point(W, po, C, k, q, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed):
     """Point q of manifold k prepared into its fields at po + f * LANES; returns its arms across
     the normal (r_a x n, r_b x n) for the block solver."""

@@ -37,7 +37,7 @@ def save_velocities(SB, n, V):
         V[i, 2] = SB[i, W]
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _energy(SB, i, vx, vy, w):
     e = 0.0
     if SB[i, IM] > 0.0:
@@ -47,7 +47,7 @@ def _energy(SB, i, vx, vy, w):
     return e
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _dynamic(SB, i):
     return SB[i, IM] > 0.0 or SB[i, II] > 0.0
 

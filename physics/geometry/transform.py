@@ -8,7 +8,7 @@ from ..store.bodies import STATIC
 from ..store.fixtures import CHAIN_SEGMENT, CIRCLE
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _fixture_box(F, V, f, px, py, c, s, margin):
     """Transform fixture f of a body at (px, py), angle (c, s); write and return its fattened AABB."""
     r = F.radius[f]

@@ -16,7 +16,7 @@ import numpy as np
 from .._jit import kernel
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def point_segment(px, py, ax, ay, bx, by):
     """(distance, closest x, closest y) from p to the segment a-b."""
     ex = bx - ax
@@ -30,7 +30,7 @@ def point_segment(px, py, ax, ay, bx, by):
     return math.hypot(px - cx, py - cy), cx, cy
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def core_point_distance(wv, wn, a, k, px, py):
     """Distance from p to the core wv[a:a+k] (0 inside a polygon core; wn: its edge normals)."""
     if k >= 3:
@@ -51,7 +51,7 @@ def core_point_distance(wv, wn, a, k, px, py):
     return best
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _inside(P, px, py):
     """Is p inside (or on) the CCW polygon P (>= 3 vertices)?"""
     k = P.shape[0]
@@ -62,7 +62,7 @@ def _inside(P, px, py):
     return True
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _cross(ax, ay, bx, by, cx, cy, dx, dy):
     """Do the closed segments a-b and c-d meet (orientation tests)?"""
     d1 = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)

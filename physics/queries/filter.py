@@ -8,7 +8,7 @@ from __future__ import annotations
 from .._jit import kernel
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def accepts(F, f, category, mask):
     """Does fixture f pass a query of ``category``/``mask`` (each side's category in the other's
     mask, and f not a sensor)?"""

@@ -20,7 +20,7 @@ from .distance import core_point_distance
 MISS = -1.0
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def ray_circle(cx, cy, r, px, py, dx, dy):
     """Ray against the disk of radius r at (cx, cy): the smaller root of |p + t d - c| = r."""
     mx = px - cx
@@ -40,7 +40,7 @@ def ray_circle(cx, cy, r, px, py, dx, dy):
     return t, (mx + t * dx) / r, (my + t * dy) / r
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def ray_segment(ax, ay, bx, by, nx, ny, px, py, dx, dy, one_sided):
     """Ray against the segment a-b with unit normal n: the normal returned faces the ray's start
     (one-sided: only rays travelling against n hit, as chain segments are)."""
@@ -62,7 +62,7 @@ def ray_segment(ax, ay, bx, by, nx, ny, px, py, dx, dy, one_sided):
     return t, nx, ny
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def ray_polygon(wv, wn, a, k, px, py, dx, dy):
     """Ray against a sharp convex polygon by clipping against each edge's half plane
     (Cyrus and Beck 1978): the entry is the largest entering fraction."""
@@ -90,7 +90,7 @@ def ray_polygon(wv, wn, a, k, px, py, dx, dy):
     return lo, wn[idx, 0], wn[idx, 1]
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def ray_rounded(wv, wn, a, k, r, px, py, dx, dy):
     """Ray against a core (k >= 2 vertices) grown by r > 0: nearest hit over pushed-out edges
     and vertex arcs."""

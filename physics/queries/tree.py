@@ -76,13 +76,13 @@ def build_tree(box, n):
     return nb[:m], info[:m], order
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def boxes_meet(nb, k, x0, y0, x1, y1):
     """Does node k's box overlap the box (x0, y0)-(x1, y1) (touching counts)?"""
     return nb[k, 0] <= x1 and x0 <= nb[k, 2] and nb[k, 1] <= y1 and y0 <= nb[k, 3]
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def ray_enters(nb, k, px, py, dx, dy, tmax):
     """Fraction where the ray p + t d enters node k's box (slab test), or inf if not in [0, tmax]."""
     lo = 0.0

@@ -17,7 +17,7 @@ from ...store.flat import fixtures_view
 from ..reach import may_touch
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def should_collide(F, i, j):
     """Box2D's filter rule for fixtures i and j (module docstring)."""
     gi = F.group[i]
@@ -26,7 +26,7 @@ def should_collide(F, i, j):
     return (F.category[i] & F.mask[j]) != 0 and (F.category[j] & F.mask[i]) != 0
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _joined(keys, a, b):
     """Is the body pair (a, b) in the sorted joint keys?"""
     m = keys.shape[0]
@@ -44,7 +44,7 @@ def _joined(keys, a, b):
     return lo < m and keys[lo] == key
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def may_collide(F, keys, i, j):
     """Fixtures i and j are on different bodies, their filters let them meet and no joint
     between their bodies turns collision off."""

@@ -14,7 +14,7 @@ from __future__ import annotations
 from ..._jit import kernel
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def seek(P, n_prev, ptr, key):
     """Advance ``ptr`` to the first previous row with key >= ``key``."""
     while ptr < n_prev and P.key[ptr] < key:
@@ -22,7 +22,7 @@ def seek(P, n_prev, ptr, key):
     return ptr
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def carry_over(C, row, P, n_prev, ptr):
     """Fill row ``row``'s carried point state from previous row ``ptr`` (if same key), else zero."""
     found = ptr < n_prev and P.key[ptr] == C.key[row]

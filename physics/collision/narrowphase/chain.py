@@ -31,7 +31,7 @@ SKIP_SINE = 0.01     # tolerance of the skip test (Box2D: sinTol)
 CHAIN_CIRCLE = 4 << 16
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _unit(x, y):
     d = math.hypot(x, y)
     return x / d, y / d
@@ -74,7 +74,7 @@ def chain_circle(v, g, cx, cy, r, margin, out_p, out_s, out_f):
     return 1, nx, ny
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _classify(nx, ny, e1x, e1y, n0x, n0y, convex1, n2x, n2y, convex2):
     """0 skip, 1 admit, 2 snap to the segment normal (module docstring)."""
     if nx * e1x + ny * e1y <= 0.0:   # toward the tail p1

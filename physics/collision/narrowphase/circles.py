@@ -14,7 +14,7 @@ CIRCLE_CIRCLE = 1 << 16
 POLY_CIRCLE = 2 << 16
 
 
-@kernel(entry=True, inline="always")
+@kernel(entry=True, forceinline=True)
 def circle_circle(ax, ay, ra, bx, by, rb, margin, out_p, out_s, out_f):
     """Returns (count, nx, ny); n from A to B.
 

@@ -28,14 +28,14 @@ from .support import extent, support_index
 EPA_EPS = 1e-12      # relative stop tolerance on the support-point gain
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _support_w(va, vb, dx, dy):
     ia = support_index(va, -dx, -dy)
     ib = support_index(vb, dx, dy)
     return vb[ib, 0] - va[ia, 0], vb[ib, 1] - va[ia, 1]
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _far_from_line(va, vb, ax, ay, bx, by, tol):
     """A support point of M off the line through a, b (both sides tried)."""
     px, py = -(by - ay), bx - ax
@@ -74,7 +74,7 @@ def start_polytope(va, vb, sw, count, poly, tol):
     return np.int64(3)  # not a literal 3: expand compiles once
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _nearest_edge(poly, n):
     """(index, distance, nx, ny) of the CCW edge nearest the origin."""
     best = -1

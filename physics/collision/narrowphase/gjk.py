@@ -22,7 +22,7 @@ REL_EPS = 1e-12      # relative tolerance of the termination test (sec. 3.2)
 TOUCH_EPS = 1e-10    # |v| below TOUCH_EPS * extent counts as touching
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _add_support(va, vb, sw, si, k, dx, dy):
     """Put the support point of M in direction (dx, dy) into simplex slot k."""
     ia = support_index(va, -dx, -dy)

@@ -31,7 +31,7 @@ from .rounded import round_pair
 BIAS = 1e-3          # reference-face hysteresis, relative to the smaller body
 
 
-@kernel(runtime=True, inline="always")
+@kernel(runtime=True, forceinline=True)
 def pair_keys(F, pairs, npairs):
     """Keys of the fixture pairs oriented by id (lower id first)."""
     keys = np.empty(npairs, np.int64)
@@ -40,7 +40,7 @@ def pair_keys(F, pairs, npairs):
     return keys
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def pair_keys_into(fid, pairs, npairs, keys):
     """``pair_keys`` into ``keys`` (``fid``: the fixtures' ids)."""
     for k in range(npairs):
@@ -51,14 +51,14 @@ def pair_keys_into(fid, pairs, npairs, keys):
         keys[k] = (ia << 32) | ib
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def pair_margin(B, a, b, dt, spec):
     """spec + dt (|v_a - v_b| + |w_a| r_a + |w_b| r_b): how close can get in a step."""
     dv = math.hypot(B.v[a, 0] - B.v[b, 0], B.v[a, 1] - B.v[b, 1])
     return spec + dt * (dv + abs(B.w[a]) * B.bound_r[a] + abs(B.w[b]) * B.bound_r[b])
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _relative(V, F, i, ox, oy, out):
     """Core vertices of fixture i shifted by -(ox, oy) into ``out``; returns how many (the caller
     slices ``out``: a kernel compiled without numba's runtime cannot hand back an array view)."""
@@ -70,7 +70,7 @@ def _relative(V, F, i, ox, oy, out):
     return n
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _manifold(B, F, V, fa, fb, a, b, method, full, margin, sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
     """Dispatch on the fixtures' shape pair; points are relative to body a's centre.
 
@@ -129,7 +129,7 @@ def _manifold(B, F, V, fa, fb, a, b, method, full, margin, sc_a, sc_b, sw, si, l
     return round_pair(va, na, F.radius[fa], vb, nb, F.radius[fb], margin, bias, out_p, out_s, out_f)
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _chain(B, F, V, fa, fb, a, b, ox, oy, margin, sc_a, sc_b, out_p, out_s, out_f):
     """A chain segment against any shape (chain.py); the normal is flipped when the chain is b."""
     s, o = (fa, fb) if F.shape[fa] == CHAIN_SEGMENT else (fb, fa)
@@ -152,7 +152,7 @@ def _chain(B, F, V, fa, fb, a, b, ox, oy, margin, sc_a, sc_b, out_p, out_s, out_
     return cnt, nx, ny
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _write_row(C, row, B, F, fa, fb, a, b, key, count, nx, ny, out_p, out_s, out_f):
     ox, oy = B.x[a, 0], B.x[a, 1]
     C.a[row] = a
@@ -199,7 +199,7 @@ def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev, full=None):
     return collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, manifold_scratch())
 
 
-@kernel(inline="always")
+@kernel(runtime=True, forceinline=True)
 def _order_into(keys, n, order):
     """The ascending order of keys[:n] into ``order``: a merge sort, unless the keys already
     ascend.  They do while the fixtures' slots follow their ids (no removal yet): the broad

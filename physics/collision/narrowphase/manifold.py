@@ -21,7 +21,7 @@ from .sat import choose_reference, face_separation
 FLIP_BIT = 1 << 14
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def incident_edge(vn, nx, ny):
     """The edge of a polygon whose outward normal is most anti-parallel to n."""
     best = 0
@@ -34,7 +34,7 @@ def incident_edge(vn, nx, ny):
     return best
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def best_aligned_face(vn, nx, ny):
     """The face of a polygon whose outward normal is closest to n."""
     best = 0
@@ -47,7 +47,7 @@ def best_aligned_face(vn, nx, ny):
     return best
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def reference_from_normal(va, na, vb, nb, nx, ny, bias):
     """(flip, face, separation) from a direction n (A to B), e.g. EPA's or GJK's.
 
@@ -62,14 +62,14 @@ def reference_from_normal(va, na, vb, nb, nx, ny, bias):
     return choose_reference(sa, fa, sb, fb, bias)
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _lerp(u1, s1, u2, s2, at):
     """(u, s) on the segment where u == at (u1, u2 on opposite sides of at)."""
     f = (at - u1) / (u2 - u1)
     return at, s1 + f * (s2 - s1)
 
 
-@kernel(entry=True, inline="always")
+@kernel(entry=True, forceinline=True)
 def clip(vr, nr, i, vi, ni, margin, out_p, out_s, out_f, flip):
     """Clip the incident edge of ``vi`` against reference edge i of ``vr``.
 

@@ -31,7 +31,7 @@ from .sat import choose_reference, max_separation
 CORNER_PAIR = 3 << 16
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _point_segment(px, py, ax, ay, bx, by):
     """(squared distance, t) of point p to segment a-b, t in [0, 1] along it."""
     ex = bx - ax
@@ -45,7 +45,7 @@ def _point_segment(px, py, ax, ay, bx, by):
     return dx * dx + dy * dy, t
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _vertex_edges(vp, ve):
     """Closest pair (d2, vertex index, edge index, t) of a vertex of vp to an edge of ve."""
     best = math.inf
@@ -63,12 +63,12 @@ def _vertex_edges(vp, ve):
     return best, bi, bj, bt
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _orient(ax, ay, bx, by, cx, cy):
     return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _inside(v, n, px, py):
     """Is p inside (or on) the convex core v with outward normals n (three or more vertices)?"""
     if v.shape[0] < 3:
@@ -79,7 +79,7 @@ def _inside(v, n, px, py):
     return True
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def cores_overlap(va, na, vb, nb):
     """Do the two convex cores intersect? (a vertex inside the other, or two edges crossing)"""
     for i in range(va.shape[0]):
@@ -102,7 +102,7 @@ def cores_overlap(va, na, vb, nb):
     return False
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def core_distance(va, vb):
     """(distance, pax, pay, pbx, pby, ia, ib): the closest points of two disjoint cores and
     the vertex or edge index on each that made them."""

@@ -12,7 +12,7 @@ from __future__ import annotations
 from ..._jit import kernel
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def face_separation(va, na, i, vb):
     """s_i = min_j n_i.(b_j - a_i) for face i of A against all vertices of B."""
     nx = na[i, 0]
@@ -27,7 +27,7 @@ def face_separation(va, na, i, vb):
     return s
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def max_separation(va, na, vb):
     """(separation, face) of A's face that best separates B (O(n m))."""
     best = 0
@@ -40,7 +40,7 @@ def max_separation(va, na, vb):
     return bs, best
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def choose_reference(sa, fa, sb, fb, bias):
     """(flip, face, separation): B's face is the reference only if clearly better.
 

@@ -20,7 +20,7 @@ import numpy as np
 from ..._jit import kernel
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def _keep(sw, si, lam, dst, src, weight):
     sw[dst, 0] = sw[src, 0]
     sw[dst, 1] = sw[src, 1]

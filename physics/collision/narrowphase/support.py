@@ -11,7 +11,7 @@ from __future__ import annotations
 from ..._jit import kernel
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def support_index(v, dx, dy):
     """Index of the vertex of ``v`` farthest along (dx, dy); first one wins ties."""
     best = 0
@@ -24,7 +24,7 @@ def support_index(v, dx, dy):
     return best
 
 
-@kernel(inline="always")
+@kernel(forceinline=True)
 def extent(va, vb):
     """A length scale of the pair: the largest |coordinate| of either polygon.
 

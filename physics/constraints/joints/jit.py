@@ -15,13 +15,13 @@ def row_kernel(fn):
 
 
 def row_inline(fn):
-    """``@row_inline``: a per-joint helper inlined into its caller by numba.  Without it every call
+    """``@row_inline``: a per-joint helper LLVM inlines into its caller.  Without it every call
     passes the tables by value (J and the scratch JW, each array's struct copied), which costs
     more than a pass's own arithmetic on a joint: the velocity passes' joint-level work (the free
     rows, the equality block, the lone block, the motor and mouse joints, the warm start) is
     inlined into the verb's loop over the joints, its one caller, so each is still typed once
     (docs/benchmarks.md has what it saved)."""
-    return kernel(fn, inline="always")
+    return kernel(fn, forceinline=True)
 
 
 def row_part(fn):
