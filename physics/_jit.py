@@ -105,11 +105,22 @@ def direct(dispatcher, *args):
 
 
 from numba.core import config as _config, cpu as _cpu  # noqa: E402
+from numba.core.types import unliteral as _unliteral  # noqa: E402
 from numba.core.registry import CPUDispatcher as _CPUDispatcher, CPUTarget as _CPUTarget  # noqa: E402
 from numba.core.registry import cpu_target as _cpu_target  # noqa: E402
 
 
-class _InternalDispatcher(_CPUDispatcher):
+class _PlainArguments:
+    """Compiled callers' constant arguments typed as plain values: numba would compile a kernel
+    once per constant (``Literal[int](3)``), where one overload serves them all, and LLVM folds
+    the constant anyway once it inlines the callee (``forceinline``)."""
+
+    def get_call_template(self, args, kws):
+        return super().get_call_template(tuple(_unliteral(a) for a in args),
+                                         {k: _unliteral(v) for k, v in kws.items()})
+
+
+class _InternalDispatcher(_PlainArguments, _CPUDispatcher):
     """A kernel that only compiled code calls (see ``kernel``'s ``entry``)."""
 
     def __call__(self, *args, **kws):
@@ -155,7 +166,7 @@ class _NoAliasTarget(_CPUTarget):
         return _cpu_target.typing_context
 
 
-class _NoAliasDispatcher(_CPUDispatcher):
+class _NoAliasDispatcher(_PlainArguments, _CPUDispatcher):
     targetdescr = _NoAliasTarget("cpu")
 
 

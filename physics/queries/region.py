@@ -36,7 +36,7 @@ def box_candidates(F, box, nb, info, order, x0, y0, x1, y1, category, mask, out)
     return m
 
 
-@kernel(forceinline=True)
+@kernel(runtime=True, forceinline=True)
 def core_of(F, wv, wc, f):
     """Fixture f's world core as a (k, 2) view: its centre for a circle, else its vertices."""
     if F.shape[f] == CIRCLE:

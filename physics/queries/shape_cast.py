@@ -54,7 +54,7 @@ def cast_against(P, rp, tx, ty, Q, rq):
     return -1.0, 0.0, 0.0, 0.0, 0.0
 
 
-@kernel(entry=True)
+@kernel(entry=True, runtime=True)
 def shape_cast(F, wv, wc, box, nb, info, order, P, rp, tx, ty, category, mask, out, hit):
     """The first fixture (slot, or -1) the swept core meets; hit[:] = fraction, point, normal."""
     x0 = min(P[:, 0].min(), P[:, 0].min() + tx) - rp
