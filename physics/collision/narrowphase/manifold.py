@@ -7,18 +7,37 @@ it; clipping it against the two side planes of the reference edge
 points, so a box lying flat gets an edge-edge contact instead of the seed's
 single vertex-edge point (seed 6.1).  See Catto, "Contact manifolds", GDC 2007.
 
-Feature ids, stable while the same edges touch (bits):
-  0-1   source of the point: 0/1 incident vertex j / j+1, 2/3 clipped at the
-        side plane of reference vertex i / i+1
-  2-7   incident edge j     8-13  reference edge i
-  14    flip (the reference face belongs to B)
+Feature ids: a point names the vertex of A and the vertex of B it stands for (Box2D v3's
+b2ClipPolygons), FACE_PAIR | FLIP_BIT (when the reference face is B's) | (vertex of A << 8) |
+vertex of B.  Each point stands for one end of the incident edge: its vertex j (the end towards
+reference vertex i + 1: the incident edge runs against the reference edge) or j + 1 (towards
+reference vertex i).  The point is that incident vertex, or the edge clipped at the reference
+edge's side plane there; either way it names the pair (i + 1, j) or (i, j + 1), ordered as (A's,
+B's).  A clipped point and the vertex it replaces are one contact: the point moves continuously
+as the incident vertex crosses the side plane, and keeps its impulse (collision/narrowphase/
+carry.py matches ids).
+
+Named apart (before: bits 0-1 said "incident vertex" or "clipped at a side plane"), the
+faces of equal length that meet in Box2D's Arch lost both points' impulses whenever a joint's
+incident vertex crossed its neighbour's side plane by a nanometre (joints 2-3 and 10-11, seven
+times in 2-20 s), and each loss kicked the arch (kinetic energy 3e-5 -> 4e-2 in one step): it
+swayed with 40 mm at the top of its origins as long as it ran.  With one name its kinetic energy
+after 2 s falls from 1e-2..4e-2 to 5e-5.
+
+A flip of the reference face still changes the id (FLIP_BIT), though the same vertex pair
+names the same place (Box2D's ids drop the flip).  Carrying the impulse over a flip between
+nearly parallel faces (normals within 1.15 deg) held the Arch's one remaining kick (a hinged
+joint, 7-8, flips once at 12 s) but toppled the tiny pyramid (top box 0.86 -> 35 box sizes;
+0.52 without load stiffening, constraints/contact_stiffness.py, whose load is the carried
+impulse): bench/results/issue18_experiments.md.
 """
 from __future__ import annotations
 
 from ..._jit import kernel
 from .sat import choose_reference, face_separation
 
-FLIP_BIT = 1 << 14
+FACE_PAIR = 1 << 15  # tags the face points' ids (rounded.py's corner pairs: 3 << 16)
+FLIP_BIT = 1 << 14   # set when the reference face is B's
 
 
 @kernel(forceinline=True)
@@ -99,10 +118,8 @@ def clip(vr, nr, i, vi, ni, margin, out_p, out_s, out_f, flip):
             u1, s1, k1 = u2, s2, k2
     elif u1 < 0.0:
         u1, s1 = _lerp(u1, s1, u2, s2, 0.0)
-        k1 = 2
     elif u2 < 0.0:
         u2, s2 = _lerp(u1, s1, u2, s2, 0.0)
-        k2 = 2
     # side plane u <= length at reference vertex i + 1
     if n_pts == 2:
         if u1 > length and u2 > length:
@@ -111,21 +128,21 @@ def clip(vr, nr, i, vi, ni, margin, out_p, out_s, out_f, flip):
                 u1, s1, k1 = u2, s2, k2
         elif u1 > length:
             u1, s1 = _lerp(u1, s1, u2, s2, length)
-            k1 = 3
         elif u2 > length:
             u2, s2 = _lerp(u1, s1, u2, s2, length)
-            k2 = 3
-    base = (flip << 14) | (i << 8) | (j << 2)
     c = 0
     for p in range(n_pts):
         u, s, k = (u1, s1, k1) if p == 0 else (u2, s2, k2)
         if s > margin:
             continue
+        vi_k = j if k == 0 else j2       # the incident vertex the point stands for
+        vr_k = i2 if k == 0 else i       # and the reference vertex across from it
+        ida, idb = (vi_k, vr_k) if flip else (vr_k, vi_k)
         h = 0.5 * s                      # midway between the two surfaces
         out_p[c, 0] = rx + u * tx + h * nx
         out_p[c, 1] = ry + u * ty + h * ny
         out_s[c] = s
-        out_f[c] = base | k
+        out_f[c] = FACE_PAIR | (flip * FLIP_BIT) | (ida << 8) | idb
         c += 1
     return c
 
