@@ -17,19 +17,15 @@ B's).  A clipped point and the vertex it replaces are one contact: the point mov
 as the incident vertex crosses the side plane, and keeps its impulse (collision/narrowphase/
 carry.py matches ids).
 
-Named apart (before: bits 0-1 said "incident vertex" or "clipped at a side plane"), the
-faces of equal length that meet in Box2D's Arch lost both points' impulses whenever a joint's
-incident vertex crossed its neighbour's side plane by a nanometre (joints 2-3 and 10-11, seven
-times in 2-20 s), and each loss kicked the arch (kinetic energy 3e-5 -> 4e-2 in one step): it
-swayed with 40 mm at the top of its origins as long as it ran.  With one name its kinetic energy
-after 2 s falls from 1e-2..4e-2 to 5e-5.
+Where faces of equal length meet (the joints of an arch), the incident vertex lies on the
+neighbour's side plane, and rounding decides from step to step whether the point is clipped: an
+id that told the two apart dropped both points' impulses each time, and each loss kicked the pile.
 
 A flip of the reference face still changes the id (FLIP_BIT), though the same vertex pair
-names the same place (Box2D's ids drop the flip).  Carrying the impulse over a flip between
-nearly parallel faces (normals within 1.15 deg) held the Arch's one remaining kick (a hinged
-joint, 7-8, flips once at 12 s) but toppled the tiny pyramid (top box 0.86 -> 35 box sizes;
-0.52 without load stiffening, constraints/contact_stiffness.py, whose load is the carried
-impulse): bench/results/issue18_experiments.md.
+names the same place (Box2D's ids drop the flip): load stiffening (constraints/
+contact_stiffness.py) reads a carried impulse as load, and carried over flips between nearly
+parallel faces it toppled a pyramid of small boxes.  The measurements behind both:
+bench/results/issue18_experiments.md, "Arch creep".
 """
 from __future__ import annotations
 

@@ -15,8 +15,8 @@ minus ra + rb, along the direction between the cores' closest points.
 * Overlapping cores: the separating-axis face of least penetration, clipped (manifold.py).
 
 Every point lies midway between the two rounded surfaces; separations are those of the
-surfaces (core separation minus ra + rb).  Feature ids: clipped points keep manifold.py's;
-a corner pair is (3 << 16) | (i << 8) | j (i on A, j on B; manifold.py's face points: FACE_PAIR | (i << 8) | j).
+surfaces (core separation minus ra + rb).  Feature ids: clipped points keep manifold.py's
+(FACE_PAIR | (i << 8) | j); a corner pair is (3 << 16) | (i << 8) | j (i on A, j on B).
 """
 from __future__ import annotations
 
