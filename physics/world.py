@@ -10,7 +10,7 @@ import warnings
 
 import numpy as np
 
-from . import measures, options, solvers, views
+from . import measures, options, solvers, threads, views
 from .body import Body
 from .errors import SimulationError
 from .metadata import Metadata
@@ -116,6 +116,7 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
         self.time_to_sleep = 0.5
         self.max_pairs = MAX_PAIRS
         self.energy_guard = 1.0
+        self.threads = threads.available()
         self.gravity = gravity
         self.dt = dt
         self.integrator = integrator
@@ -307,6 +308,19 @@ class World(JointsMixin, QueriesMixin, BatchMixin, BodiesMixin, FixturesMixin, S
     def narrowphase(self, name):
         options.code(options.NARROWPHASES, name, "narrow phase")
         self._narrowphase = name
+        self._pipeline.dirty = True
+
+    @property
+    def threads(self) -> int:
+        """Threads a step may use (default: every core numba can use here, 1 without an OpenMP
+        or TBB threading layer: physics/threads.py).  A large scene's contact colours, bodies and
+        manifolds are split between them; any count gives the same numbers bit for bit.
+        ValueError outside 1..the cores numba can use."""
+        return self._threads
+
+    @threads.setter
+    def threads(self, n):
+        self._threads = threads.check(n)
         self._pipeline.dirty = True
 
     @property

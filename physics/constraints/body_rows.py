@@ -12,8 +12,11 @@ from __future__ import annotations
 
 import math
 
+from numba import prange
+
 from .._jit import kernel
 from ..store import DYNAMIC, STATIC
+from ..threads import MIN_BODIES
 from .rotation_cap import MAX_ROTATION, cap_about_pivot
 
 VX, VY, W, IM, II, DPX, DPY, DCOS, DSIN = range(9)
@@ -53,9 +56,24 @@ def load_velocities(B, n, SB):
 
 
 @kernel
-def integrate_row_velocities(B, n, SB, gx, gy, h):
-    """Gravity and user forces on awake dynamic bodies, into the rows' velocities."""
-    for i in range(n):
+def integrate_row_velocities(B, n, SB, gx, gy, h, nthr):
+    """Gravity and user forces on awake dynamic bodies, into the rows' velocities; split between
+    ``nthr`` threads for many bodies (each body on its own: the same numbers for any split)."""
+    if nthr > 1 and n >= MIN_BODIES * nthr:
+        _velocities_split(B, n, SB, gx, gy, h, nthr)
+    else:
+        _velocities(B, 0, n, SB, gx, gy, h)
+
+
+@kernel(parallel=True)
+def _velocities_split(B, n, SB, gx, gy, h, nthr):
+    for t in prange(nthr):
+        _velocities(B, n * t // nthr, n * (t + 1) // nthr, SB, gx, gy, h)
+
+
+@kernel
+def _velocities(B, i0, i1, SB, gx, gy, h):
+    for i in range(i0, i1):
         if B.kind[i] != DYNAMIC or B.awake[i] == 0:
             continue
         SB[i, VX] += h * (gx + B.inv_m[i] * B.f[i, 0])
@@ -64,7 +82,22 @@ def integrate_row_velocities(B, n, SB, gx, gy, h):
 
 
 @kernel
-def integrate_row_positions(B, n, SB, h, PV, npv):
+def integrate_row_positions(B, n, SB, h, PV, npv, nthr):
+    """_positions over every body, split between ``nthr`` threads as integrate_row_velocities."""
+    if nthr > 1 and n >= MIN_BODIES * nthr:
+        _positions_split(B, n, SB, h, PV, npv, nthr)
+    else:
+        _positions(B, 0, n, SB, h, PV, npv)
+
+
+@kernel(parallel=True)
+def _positions_split(B, n, SB, h, PV, npv, nthr):
+    for t in prange(nthr):
+        _positions(B, n * t // nthr, n * (t + 1) // nthr, SB, h, PV, npv)
+
+
+@kernel
+def _positions(B, i0, i1, SB, h, PV, npv):
     """x += h v, q += h w with the rows' velocities (rotation per sub-step capped at
     MAX_ROTATION, about a joint's anchor for the first ``npv`` bodies: joints/pivot.py);
     accumulates the displacement since the step began.
@@ -74,7 +107,7 @@ def integrate_row_positions(B, n, SB, h, PV, npv):
     from their series to within rounding (first omitted terms < 1e-15) instead
     of two libm calls per body and sub-step.
     """
-    for i in range(n):
+    for i in range(i0, i1):
         if B.kind[i] == STATIC or B.awake[i] == 0:
             continue
         w = SB[i, W]

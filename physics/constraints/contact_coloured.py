@@ -22,8 +22,10 @@ several lanes of one colour: every lane writes back its unchanged velocity, so t
 from __future__ import annotations
 
 import numpy as np
+from numba import prange
 
 from .._jit import kernel, kernel_noalias
+from ..threads import MIN_BLOCKS
 from .body_rows import (DCOS as _DC, DPX as _DX, DPY as _DY, DSIN as _DS, II as _II, IM as _IM, VX as _VX,
                         VY as _VY, W as _W)
 from .colouring import COUNT, FLAGS, IN_TURN, LANES, OVERFLOW, RUNS
@@ -269,13 +271,14 @@ WARM, SOLVE, RELAX = range(3)
 
 
 @kernel
-def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp):
+def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp, nthr):
     """One pass (WARM, SOLVE or RELAX) over the colours in use, in solve order (colouring.py's
     ``bstart``: the blocks, and the manifold counts that tell how many lanes of a colour's last
     block are real); ``fp`` the friction_pass.  A colour's full blocks are solved side by side
-    in vector code; a last block that padding fills in part lane after lane over its real lanes
-    only (the same numbers: its lanes share no moving body), so a small scene does not pay for
-    eight lanes per manifold."""
+    in vector code, split between ``nthr`` threads when there are enough of them
+    (physics/threads.py); a last block that padding fills in part lane after lane over its real
+    lanes only (the same numbers: its lanes share no moving body), so a small scene does not pay
+    for eight lanes per manifold."""
     S = SB.reshape(SB.size)  # the body rows as one flat array (row offsets in GA, GB)
     in_turn = (bstart[FLAGS] & IN_TURN) != 0  # (a test flag: every colour lane after lane)
     for u in range(bstart[RUNS]):  # the colours in use only (most of the COLOURS are empty)
@@ -287,10 +290,22 @@ def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp):
             _blocks(kind, b0, b1, last, W_, WV, GA, GB, S, inv_h, push, fp, np.int64(1))
             continue
         bf = b1 if last == L else b1 - 1  # the full blocks
-        if bf > b0:
+        if bf > b0 and nthr > 1 and bf - b0 >= MIN_BLOCKS * nthr:
+            _blocks_split(kind, b0, bf, nthr, W_, WV, GA, GB, S, inv_h, push, fp)
+        elif bf > b0:
             _blocks(kind, b0, bf, np.int64(L), W_, WV, GA, GB, S, inv_h, push, fp, None)
         if bf < b1:
             _blocks(kind, bf, b1, last, W_, WV, GA, GB, S, inv_h, push, fp, np.int64(1))
+
+
+@kernel(parallel=True)
+def _blocks_split(kind, b0, b1, nthr, W_, WV, GA, GB, S, inv_h, push, fp):
+    """One colour's full blocks b0..b1-1 in ``nthr`` chunks, one per thread: the chunks share no
+    moving body (a fixed one every lane leaves as it was), so any split gives the same numbers."""
+    nb = b1 - b0
+    for t in prange(nthr):
+        _blocks(kind, b0 + nb * t // nthr, b0 + nb * (t + 1) // nthr, np.int64(L), W_, WV, GA, GB, S, inv_h, push,
+                fp, None)
 
 
 @kernel

@@ -26,8 +26,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba import prange
 
 from .._jit import kernel
+from ..threads import MIN_SLOTS
 from .body_rows import NB
 from .colouring import LANES
 from .contact_soft import manifold_state, prepared_block, prepared_point, prepared_softness
@@ -126,12 +128,32 @@ def _point(W, po, C, k, q, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvt
 
 
 @kernel
-def prepare_wide(c, p, B, C, order, slots, W, GA, GB):
+def prepare_wide(ctx, par, B, C, order, slots, W, GA, GB):
     """W, GA, GB for the slots 0..slots-1 from the manifolds and the bodies at the start of the
-    step: what ``prepare_contacts`` then ``pack`` leave there, without the rows between."""
+    step: what ``prepare_contacts`` then ``pack`` leave there, without the rows between; split
+    between ``c.threads`` threads for many slots (each slot on its own: the same numbers)."""
+    nthr = ctx[0].threads
+    if nthr > 1 and slots >= MIN_SLOTS * nthr:
+        _prepare_split(ctx, par, B, C, order, slots, W, GA, GB, nthr)
+    else:
+        _prepare(ctx[0], par[0], B, C, order, 0, slots, W, GA, GB)
+
+
+@kernel(parallel=True)
+def _prepare_split(ctx, par, B, C, order, slots, W, GA, GB, nthr):
+    """prepare_wide's slots in chunks of whole blocks, one per thread (the context and the
+    parameters come as their one-element arrays: numba hands no record to a parallel loop)."""
+    nb = slots // LANES  # whole blocks: no two threads write one block's cache lines
+    for t in prange(nthr):
+        _prepare(ctx[0], par[0], B, C, order, nb * t // nthr * LANES, slots if t + 1 == nthr else nb * (t + 1) // nthr * LANES,
+                 W, GA, GB)
+
+
+@kernel
+def _prepare(c, p, B, C, order, j0, j1, W, GA, GB):
     stick_speed = p.stick_speed
     g = math.hypot(c.gx, c.gy)
-    for j in range(slots):
+    for j in range(j0, j1):
         k = order[j]
         if k < 0:  # padding
             continue

@@ -34,6 +34,7 @@ CONTEXT_FIELDS = (
     ("integrator", np.int64),     # code in options.INTEGRATORS
     ("narrowphase", np.int64),    # code in options.NARROWPHASES
     ("push_speed", np.float64),   # the mode's push-out speed cap (m/s): the energy guard's allowance
+    ("threads", np.int64),        # threads the step may split its wide loops over (physics/threads.py)
 )
 
 

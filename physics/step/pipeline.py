@@ -93,6 +93,7 @@ class Pipeline:
             ctx.set("time_to_sleep", world.time_to_sleep)
             ctx.set("integrator", options.INTEGRATORS.index(world.integrator))
             ctx.set("narrowphase", options.NARROWPHASES.index(world.narrowphase))
+            ctx.set("threads", world.threads)
             self.dirty = False
 
     def params(self, world) -> ModeParams:

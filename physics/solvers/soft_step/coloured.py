@@ -111,7 +111,7 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
         prepare_contacts(c, p, B, C, R)
         pack(C, R, order, slots, p.block_solver, W, GA, GB)
     else:
-        prepare_wide(c, p, B, C, order, slots, W, GA, GB)
+        prepare_wide(ctx, par, B, C, order, slots, W, GA, GB)
     if J is not None:
         if not p.warm_starting:
             zero_joint_impulses(J, c.nj)
@@ -125,26 +125,26 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
     warm, solve, relax = np.int64(WARM), np.int64(SOLVE), np.int64(RELAX)
     fresh = np.bool_(False)  # the joints' rows are those of the bodies' current positions (dispatch.refresh_rows)
     for _ in range(p.substeps):
-        integrate_row_velocities(B, n, SB, c.gx, c.gy, h)
+        integrate_row_velocities(B, n, SB, c.gx, c.gy, h, c.threads)
         if bouncy:
             save_velocities(SB, n, V0)
-        coloured_pass(warm, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass)
+        coloured_pass(warm, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass, c.threads)
         if J is not None:
             warm_start_joints(c, B, J, JW, JS, not fresh)
         for it in range(p.iterations):
-            coloured_pass(solve, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass)
+            coloured_pass(solve, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass, c.threads)
             if J is not None:
                 solve_joints(c, B, J, JW, JS, np.bool_(True), p.inv_h, eq_global)
         if S is not None and c.ns > 0:  # last before the move (module doc; S None: no springs)
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
-        integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0))
+        integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0), c.threads)
         fresh = np.bool_(False)
         if project:
             project_joints(c, B, J, JW, JS)
         if p.relax:
-            coloured_pass(relax, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass)
+            coloured_pass(relax, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass, c.threads)
             if J is not None:
                 refresh_rows(c, B, J, JW, JS)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, np.bool_(False), p.inv_h, eq_global)

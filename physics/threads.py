@@ -1,0 +1,76 @@
+"""How many threads a step may use (``World.threads``), and the threading layer under them.
+
+The step splits its wide loops (a colour's contact blocks, the bodies' integration, the
+manifolds' preparation) into one chunk per thread with numba's ``prange``; every chunk computes
+exactly what one thread would (the chunks share no body: Box2D v3's graph colouring), so the
+results are the same bits for any thread count.
+
+numba runs ``prange`` on a threading layer: OpenMP or TBB start a parallel region in about a
+microsecond here; its fallback ("workqueue") takes ~100 us per region
+(../shared/notes/solver-speed.md), more than the work it would split, so without OpenMP or TBB
+the step stays on one thread.
+"""
+from __future__ import annotations
+
+import importlib
+
+from numba.core import config
+
+#: below this many bodies, manifold blocks (of colouring.LANES) or slots per thread, a loop
+#: runs on one thread: starting a parallel region costs about a microsecond, a block's solve
+#: about 0.1 us
+MIN_BODIES = 512
+MIN_BLOCKS = 24
+MIN_SLOTS = 256
+
+_LAYER: list = []
+
+
+def layer() -> str | None:
+    """The threading layer numba can start ("tbb" or "omp", in numba's own order of
+    preference), or None when only its slow fallback is there (or the user asked for it)."""
+    if not _LAYER:
+        want = str(config.THREADING_LAYER).lower()
+        candidates = {"default": ("tbb", "omp"), "threadsafe": ("tbb", "omp"), "forksafe": ("tbb", "omp"),
+                      "safe": ("tbb",), "tbb": ("tbb",), "omp": ("omp",)}.get(want, ())
+        found = None
+        for name in candidates:
+            try:
+                importlib.import_module(f"numba.np.ufunc.{name}pool")
+            except ImportError:
+                continue
+            found = name
+            break
+        _LAYER.append(found)
+    return _LAYER[0]
+
+
+def start() -> None:
+    """Start numba's thread pool now, before any kernel loads from the cache: a cached kernel
+    that calls a parallel loop links against the pool's scheduler (``allocate_sched``), which
+    numba registers only when it starts the pool, and it starts it when it compiles a parallel
+    loop, not when it loads one."""
+    if layer():
+        from numba.np.ufunc.parallel import _launch_threads
+        _launch_threads()
+
+
+def available() -> int:
+    """The most threads a step can use here: numba's thread count (the machine's cores unless
+    ``NUMBA_NUM_THREADS`` says otherwise) with OpenMP or TBB, else 1."""
+    return int(config.NUMBA_NUM_THREADS) if layer() else 1
+
+
+def check(value) -> int:
+    """``value`` as a thread count, or ValueError naming ``threads``."""
+    if isinstance(value, bool) or not isinstance(value, int) and not hasattr(value, "__index__"):
+        raise ValueError(f"threads must be a whole number, got {value!r}")
+    n = int(value)
+    top = available()
+    if not 1 <= n <= top:
+        why = "" if layer() else " (numba has no OpenMP or TBB threading layer here)"
+        raise ValueError(f"threads must be between 1 and {top} on this machine{why}, got {n}")
+    return n
+
+
+start()
