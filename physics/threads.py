@@ -22,6 +22,7 @@ from numba.core import config
 MIN_BODIES = 512
 MIN_BLOCKS = 24
 MIN_SLOTS = 256
+MIN_PAIRS = 256
 
 _LAYER: list = []
 

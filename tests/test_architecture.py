@@ -17,7 +17,7 @@ PHYSICS = Path(physics.__file__).resolve().parent
 
 # a package may import only packages of the same or a lower layer (index)
 LAYERS = [
-    {"_jit", "options", "errors", "validate", "settings", "joint_params"},
+    {"_jit", "threads", "options", "errors", "validate", "settings", "joint_params"},
     {"store", "geometry"},
     {"collision"},
     {"constraints"},

@@ -20,7 +20,8 @@ from ..collision.broadphase.brute import brute_pairs
 from ..collision.broadphase.order import sort_pairs as sort_slot_pairs
 from ..collision.broadphase.sweep import sweep_emit
 from ..collision.broadphase.fixture_filter import filter_reachable
-from ..collision.narrowphase.kernel import collide_with, sort_pairs
+from ..collision.narrowphase.collide import collide_with
+from ..collision.narrowphase.kernel import sort_pairs
 from ..constraints.joints.kinds import kinds_changed_in
 from ..constraints.colouring import COLOURS, LANES
 from ..solvers.soft_step.coloured import colour_blocks, soft_step_wide

@@ -6,7 +6,8 @@ van den Bergen 1999), ``epa`` (penetration depth), ``sat`` (separating axes),
 ``rounded`` (rounded polygons, capsules and segments: cores swept by a radius), ``chain``
 (one-sided chain segments with ghost vertices),
 ``pair`` (one polygon pair by either method), ``carry`` (per-point state
-carried from the previous step) and ``kernel`` (the whole pass).  The single-pair
+carried from the previous step), ``kernel`` (a run of pairs) and ``collide`` (the whole pass, split
+between threads).  The single-pair
 entries (``sat_query``, ``gjk_distance``, ``epa``, ``polygon_collide``, ``circle_circle``, ``polygon_circle``) take
 plain vertex arrays in world coordinates for tests and tools.
 """
@@ -15,7 +16,7 @@ from __future__ import annotations
 from .circles import circle_circle, polygon_circle
 from .epa import epa
 from .gjk import gjk_distance
-from .kernel import collide_flat, collide_kernel
+from .collide import collide_flat, collide_kernel
 from .limit import check_rows
 from .pair import GJK, METHODS, SAT, polygon_collide
 from .sat import sat_query

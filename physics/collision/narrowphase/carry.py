@@ -41,3 +41,27 @@ def carry_over(C, row, P, n_prev, ptr):
                 C.stick[row, p] = P.stick[ptr, q]
                 C.approach[row, p] = P.approach[ptr, q]
                 break
+
+
+@kernel(forceinline=True)
+def move_row(C, dst, src):
+    """Row ``src`` of the contact table copied into row ``dst``: every field of
+    store/contacts.py's CONTACT_FIELDS (tests/test_threads.py checks that none is missed)."""
+    C.a[dst] = C.a[src]
+    C.b[dst] = C.b[src]
+    C.key[dst] = C.key[src]
+    C.count[dst] = C.count[src]
+    C.e[dst] = C.e[src]
+    C.mu_s[dst] = C.mu_s[src]
+    C.mu_d[dst] = C.mu_d[src]
+    C.colour[dst] = C.colour[src]
+    for p in range(2):
+        C.normal[dst, p] = C.normal[src, p]
+        C.point[dst, p, 0] = C.point[src, p, 0]
+        C.point[dst, p, 1] = C.point[src, p, 1]
+        C.depth[dst, p] = C.depth[src, p]
+        C.feature[dst, p] = C.feature[src, p]
+        C.jn[dst, p] = C.jn[src, p]
+        C.jt[dst, p] = C.jt[src, p]
+        C.stick[dst, p] = C.stick[src, p]
+        C.approach[dst, p] = C.approach[src, p]

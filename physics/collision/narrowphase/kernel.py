@@ -19,7 +19,6 @@ import numpy as np
 from ..._jit import kernel
 from ...geometry.shapes import MAX_POLYGON_VERTICES
 from ...store.fixtures import CHAIN_SEGMENT, CIRCLE, POLYGON
-from ...store.flat import bodies_view, contacts_view, fixtures_view, verts_view
 from ..argsort import argsort_into
 from ..reach import may_touch
 from .carry import carry_over, seek
@@ -182,23 +181,6 @@ def manifold_scratch():
             np.zeros((2, 2)), np.zeros(2), np.zeros(2, np.int32))
 
 
-@kernel(runtime=True)
-def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev, full=None):
-    """Fill C (rows sorted by key, point state carried over from P); returns the row count, or
-    -1 when ``full`` is None (the lean kernel: ``_manifold``) and a pair needs the whole kernel.
-
-    ``ctx``: the step context (physics/step/context.py: dt, spec, narrowphase); ``full``: None
-    for the lean kernel (the narrow phase must be SAT), any integer for the whole one.
-
-    Allocates the sort order and the scratch once per call; the per-pair work
-    is ``_rows``.
-    """
-    keys = pair_keys(F, pairs, npairs)
-    order = np.empty(npairs, np.int64)
-    _order_into(keys, npairs, order)
-    return collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, manifold_scratch())
-
-
 @kernel(runtime=True, forceinline=True)
 def _order_into(keys, n, order):
     """The ascending order of keys[:n] into ``order``: a merge sort, unless the keys already
@@ -231,21 +213,12 @@ def sort_pairs(fid, pairs, npairs, keys, order):
         order[j] = k
 
 
-@kernel
-def collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, scratch):
-    """``collide_kernel`` with the pairs' ``keys`` and ``order[:npairs]`` given and the manifold
-    ``scratch`` (manifold_scratch's arrays) reused: the step driver keeps them between steps."""
-    sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f = scratch
-    c = ctx[0]
-    return _rows(B, F, V, pairs, order[:npairs], keys, C, P, n_prev, c.narrowphase, full, c.dt, c.spec,
-                 sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f)
-
-
 @kernel(entry=True)
-def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, full, dt, spec,
+def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, full, dt, spec, row, ptr,
           sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f):
-    row = 0
-    ptr = 0
+    """The rows of the pairs ``order`` (in key order) from row ``row`` on, the previous step's rows
+    searched from ``ptr`` (carry.py); returns the row after the last, or -1 when the lean kernel
+    (``full`` None) met a pair it leaves out."""
     for k in order:
         fa, fb = pairs[k, 0], pairs[k, 1]
         if F.id[fa] > F.id[fb]:
@@ -265,11 +238,3 @@ def _rows(B, F, V, pairs, order, keys, C, P, n_prev, method, full, dt, spec,
         carry_over(C, row, P, n_prev, ptr)
         row += 1
     return row
-
-
-@kernel(entry=True, runtime=True)
-def collide_flat(ctx, BF, BI, FF, FI, ghost, wghost, VF, VI, pairs, npairs, CF, CI, Cpt, PF, PI, Ppt, n_prev,
-                 full=None):
-    """``collide_kernel`` over the tables' flat arrays (store/flat.py)."""
-    return collide_kernel(ctx, bodies_view(BF, BI), fixtures_view(FF, FI, ghost, wghost), verts_view(VF, VI),
-                          pairs, npairs, contacts_view(CF, CI, Cpt), contacts_view(PF, PI, Ppt), n_prev, full)
