@@ -1,8 +1,8 @@
 """Box2D v3's own benchmark suite, timed side by side: ``python -m bench.suite_speed``.
 
 Every scene of ``bench.suite.SUITE`` (``shared/benchmarks.c`` rebuilt as scene descriptions)
-that Stelkropp can build runs in Stelkropp (soft_step defaults), Box2D v3 with one thread and
-with two, and pymunk where its adapter can build the scene, interleaved chunk by chunk exactly
+that Stelkropp can build runs in Stelkropp (soft_step defaults) with one thread and with two
+(``World.threads``), Box2D v3 with one thread and with two, and pymunk where its adapter can build the scene, interleaved chunk by chunk exactly
 as ``python -m bench`` times its own scenes (bench/timing.py): ms/step is the median over the
 timed chunks, a ratio the median of the per-chunk ratios, the first step (compile) apart.
 A scene's ``bench`` script (rain's ragdoll events, junkyard's pusher drive) runs on our side
@@ -26,13 +26,13 @@ from pathlib import Path
 from .engines import build, why_unusable
 from .engines.ours import OursSim
 from .paths import RESULTS
-from .report.suite_table import B1, B2, OURS, PM, table_md
+from .report.suite_table import B1, B2, OURS, OURS2, PM, table_md
 from .suite import NEEDS, SUITE
 from .suite.common import strip_box2d
 from .suite.scripts import Scripted, sleep_threshold
 from .timing import chunk_ratio, interleaved, median_ms
 
-def _ours(desc, settings=None):
+def _ours(desc, settings=None, threads=1):
     """Stelkropp's world from the scene loader (it refuses what the core lacks, e.g. joints before
     the joints issue lands, instead of building a different scene), behind OursSim; ``settings``:
     soft_step settings instead of their defaults (``--set``)."""
@@ -48,6 +48,7 @@ def _ours(desc, settings=None):
     sim = OursSim(desc, world=world)
     sim.world.solver = "soft_step"
     sim.world.settings.update(settings or {})
+    sim.world.threads = threads
     if (v := sleep_threshold(desc)) is not None:
         sim.world.sleep_linear = v  # Box2D's per-body sleepThreshold, the same on every body (rain)
     bench = desc.get("bench", {})
@@ -65,6 +66,7 @@ def _pymunk(desc):
 def _sims(desc, settings=None):
     """{label: Sim} of every engine that builds ``desc``, and {label: why not} for the others."""
     makers = {OURS: lambda: _ours(desc, settings),
+              OURS2: lambda: _ours(desc, settings, threads=2),
               B1: lambda: build("box2d_v3", desc, threads=1, sleeping=None, track_angles=False),
               B2: lambda: build("box2d_v3", desc, threads=2, sleeping=None, track_angles=False),
               PM: lambda: _pymunk(desc)}
@@ -99,6 +101,9 @@ def run_scene(name, steps=None, chunk=10, warm=20, budget_s=None, desc=None, set
                ms_step={k: median_ms(c) for k, c in chunks.items()})
     row["bodies_end"] = len(sims[OURS].world.bodies)  # rain: the ragdolls its events added
     row["ratio"] = {k: chunk_ratio(chunks[OURS], c) for k, c in chunks.items() if k != OURS}
+    if OURS2 in chunks:
+        row["ratio_2t"] = {k: chunk_ratio(chunks[OURS2], chunks[k]) for k in (B1, B2) if k in chunks}
+        row["two_thread_speedup"] = chunk_ratio(chunks[OURS], chunks[OURS2])
     if B1 in chunks and B2 in chunks:
         row["box2d_two_thread_speedup"] = chunk_ratio(chunks[B1], chunks[B2])
     return row
@@ -114,11 +119,11 @@ def plot(rows, path):
     if not done:
         return None
     fig, ax = plt.subplots(figsize=(max(6, 1.6 * len(done)), 4.5))
-    engines = [OURS, B1, B2, PM]
+    engines = [OURS, OURS2, B1, B2, PM]
     x = np.arange(len(done))
     for i, e in enumerate(engines):
         ys = [r["ms_step"].get(e) or np.nan for r in done]
-        ax.bar(x + (i - 1.5) * 0.2, ys, 0.2, label=e)
+        ax.bar(x + (i - 2) * 0.16, ys, 0.16, label=e)
     ax.set_xticks(x, [r["scene"] for r in done])
     ax.set_yscale("log")
     ax.set_ylabel("ms/step (median of interleaved chunks)")

@@ -7,7 +7,7 @@ import math
 import pytest
 
 import physics
-from bench.report.suite_table import B1, B2, OURS, PM, table_md
+from bench.report.suite_table import B1, B2, OURS, OURS2, PM, table_md
 from bench.suite import LACKS, NEEDS, SUITE
 from bench.suite.benchmarks import joint_grid, junkyard, large_pyramid, smash
 from bench.suite.common import body, box, scene
@@ -16,16 +16,25 @@ from bench.suite_speed import _ours, _pymunk, run_scene
 from physics.scene import scene_from_dict
 from physics.errors import SceneError
 from box2d_ref import box2d_v3
+from physics import threads
+
+# ours on two threads runs where numba can run two (World.threads)
+OURS_2T = {OURS2} if threads.available() >= 2 else set()
 
 
 def test_a_small_large_pyramid_runs_in_every_engine_interleaved():
     box2d_v3()  # Box2D v3 runs beside us here (skips, saying why, only without its sources)
     row = run_scene("large_pyramid", steps=41, chunk=10, warm=10, desc=large_pyramid(base=8))
     assert row["status"] == "ok" and row["steps_done"] == 41
-    assert set(row["ms_step"]) == {OURS, B1, B2, PM}
-    for e in (B1, B2, PM):
+    assert set(row["ms_step"]) == {OURS, B1, B2, PM} | OURS_2T  # ours with one thread and (here) with two
+    for e in (B1, B2, PM, *OURS_2T):
         assert math.isfinite(row["ratio"][e]) and row["ratio"][e] > 0
     assert math.isfinite(row["box2d_two_thread_speedup"])
+    if OURS_2T:
+        assert all(math.isfinite(row["ratio_2t"][e]) and row["ratio_2t"][e] > 0 for e in (B1, B2))
+        assert math.isfinite(row["two_thread_speedup"])
+    else:
+        assert "threads" in row["not_built"][OURS2]
     md = table_md([row])
     assert md[2].startswith("| large_pyramid | 37 | 41 |")
 
@@ -41,7 +50,7 @@ def test_rain_times_the_ragdolls_its_events_add_on_both_sides():
     # 3 event steps (0, 8, 16) of 25 ragdolls of 11 bodies: ours must time them, not the bare ground
     row = run_scene("rain", steps=21, chunk=10, warm=10, desc=rain(steps=21))
     assert row["status"] == "ok" and row["bodies_end"] == 1 + 3 * 25 * 11
-    assert set(row["ms_step"]) == {OURS, B1, B2} and "bench.events" in row["not_built"][PM]
+    assert set(row["ms_step"]) == {OURS, B1, B2} | OURS_2T and "bench.events" in row["not_built"][PM]
     assert "1->826" in table_md([row])[2] and "no pymunk" in table_md([row])[2]
 
 

@@ -12,16 +12,18 @@ class OursSim(Sim):
     """Stelkropp running a description.  ``solver`` / ``settings`` / ``integrator`` choose the
     mode and override its defaults; ``world``: an already built world of the same bodies (the
     scene loader's), else one is built from the description; ``dt`` (s) overrides the
-    description's.  Sleeping, gravity and dt follow the description's world block."""
+    description's; ``threads``: World.threads (1 unless asked: the figures compare one thread
+    with one).  Sleeping, gravity and dt follow the description's world block."""
 
     engine = "stelkropp"
 
-    def __init__(self, desc, solver=None, settings=None, world=None, integrator=None, dt=None):
+    def __init__(self, desc, solver=None, settings=None, world=None, integrator=None, dt=None, threads=1):
         super().__init__(desc)
         w = desc.get("world", {})
         if world is None:
             world = build_ours_world(desc)
         world.sleeping = bool(w.get("sleeping", False))
+        world.threads = threads
         if "gravity" in w:
             world.gravity = tuple(w["gravity"])
         if "dt" in w:

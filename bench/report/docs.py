@@ -114,8 +114,9 @@ def _suite_md(res, rel):
     rows = json.loads(path.read_text())
     return ["## Box2D v3's benchmark suite", "",
             "`shared/benchmarks.c` of the Box2D v3 snapshot rebuilt as scenes (`bench/suite/`), timed interleaved "
-            "in Stelkropp (soft_step defaults), Box2D v3 with one and two threads and pymunk "
-            "(`python -m bench.suite_speed`; `x Box2D 1T` is ours / Box2D's one-thread time per chunk). "
+            "in Stelkropp (soft_step defaults) and Box2D v3, each with one and two threads, and pymunk "
+            "(`python -m bench.suite_speed`; `1T x Box2D 1T` is our one-thread time over Box2D's per chunk, "
+            "`our 2T speedup` our one-thread time over our two threads'). "
             "Every scene is built from the same description in both engines; `bench.events` (rain's ragdolls, "
             "added and removed inside the timed loop) and `bench.drives` (junkyard's pusher) run on both sides "
             "(`bench/suite/scripts.py` for ours: rain's ragdolls are created through the world's Python calls, "

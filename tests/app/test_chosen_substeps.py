@@ -74,6 +74,9 @@ def test_the_panel_names_the_choice_and_a_typed_value_overrides_it(launch, tmp_p
 
     st = visible(app, "solver_defaults")
     app.click(*centre(st["ui_rects"]["solver_defaults"]))
-    st = app.wait(lambda s: s["ui_values"]["solver_settings"]["settings"]["substeps"] == 8, 20, "back to 8")
+    # the fitted value and its line may land in different frames: wait for both (a line that
+    # never comes back fails here, after 20 s)
+    st = app.wait(lambda s: s["ui_values"]["solver_settings"]["settings"]["substeps"] == 8
+                  and "substeps" in s["ui_values"]["solver_chosen"], 20, "back to 8, with its line")
     assert st["ui_values"]["solver_chosen"]["substeps"].startswith("8 (thin shapes")
     assert not st["fault"] and not st["gl_errors"]
