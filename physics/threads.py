@@ -9,10 +9,16 @@ numba runs ``prange`` on a threading layer: OpenMP or TBB start a parallel regio
 microsecond here; its fallback ("workqueue") takes ~100 us per region
 (../shared/notes/solver-speed.md), more than the work it would split, so without OpenMP or TBB
 the step stays on one thread.
+
+GNU OpenMP cannot run in a child that ``fork()`` made of a process that used it (numba stops
+the child: "fork() called from a process already using GNU OpenMP").  multiprocessing forks by
+default on Linux, so in such a child every world steps on one thread (``usable``), whatever
+``World.threads`` says; a spawned process starts its own pool.
 """
 from __future__ import annotations
 
 import importlib
+import os
 
 from numba.core import config
 
@@ -25,6 +31,7 @@ MIN_SLOTS = 256
 MIN_PAIRS = 256
 
 _LAYER: list = []
+FORKED = [False]  # this process is a fork of one whose OpenMP pool ran (module doc)
 
 
 def layer() -> str | None:
@@ -54,12 +61,24 @@ def start() -> None:
     if layer():
         from numba.np.ufunc.parallel import _launch_threads
         _launch_threads()
+        if layer() == "omp":
+            os.register_at_fork(after_in_child=_forked)
+
+
+def _forked() -> None:
+    FORKED[0] = True
 
 
 def available() -> int:
     """The most threads a step can use here: numba's thread count (the machine's cores unless
-    ``NUMBA_NUM_THREADS`` says otherwise) with OpenMP or TBB, else 1."""
-    return int(config.NUMBA_NUM_THREADS) if layer() else 1
+    ``NUMBA_NUM_THREADS`` says otherwise) with OpenMP or TBB, else 1 (and 1 in a forked child
+    of a process that started OpenMP: module doc)."""
+    return int(config.NUMBA_NUM_THREADS) if layer() and not FORKED[0] else 1
+
+
+def usable(n: int) -> int:
+    """The threads a step asked to use ``n`` runs on in this process."""
+    return 1 if FORKED[0] else n
 
 
 def check(value) -> int:
@@ -69,7 +88,8 @@ def check(value) -> int:
     n = int(value)
     top = available()
     if not 1 <= n <= top:
-        why = "" if layer() else " (numba has no OpenMP or TBB threading layer here)"
+        why = (" (a forked child of a process that ran OpenMP)" if FORKED[0] else
+               "" if layer() else " (numba has no OpenMP or TBB threading layer here)")
         raise ValueError(f"threads must be between 1 and {top} on this machine{why}, got {n}")
     return n
 

@@ -90,3 +90,23 @@ def test_a_moved_contact_row_keeps_every_field():
     for name in CONTACT_FIELDS:
         assert np.array_equal(cols[name][1], before[name][3]), name
         assert np.array_equal(cols[name][[0, 2, 3]], before[name][[0, 2, 3]]), name
+
+
+def _child_digest(q):
+    w = _run(60, 10, threads.available())  # 1 in a forked child of a process that ran OpenMP
+    q.put((threads.available(), state_digest(w)))
+
+
+@TWO
+def test_a_forked_child_steps_on_one_thread():
+    """multiprocessing forks by default on Linux; GNU OpenMP stops a forked child that starts a
+    parallel region, so after the parent ran two threads the child must step on one."""
+    import multiprocessing as mp
+    ref = state_digest(_run(60, 10, 2))  # the parent's pool has run
+    ctx = mp.get_context("fork")
+    q = ctx.Queue()
+    p = ctx.Process(target=_child_digest, args=(q,))
+    p.start()
+    p.join(300)
+    assert p.exitcode == 0
+    assert q.get(timeout=5) == (1, ref)

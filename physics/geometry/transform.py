@@ -3,7 +3,10 @@ from __future__ import annotations
 
 import math
 
+from numba import prange
+
 from .._jit import kernel
+from ..threads import MIN_BODIES
 from ..store.bodies import STATIC
 from ..store.fixtures import CHAIN_SEGMENT, CIRCLE
 
@@ -70,7 +73,7 @@ def _clear_box(B, i):
 
 
 @kernel(entry=True)
-def update_geometry(B, F, V, n, nf, dt, spec, full):
+def update_geometry(B, F, V, n, nf, dt, spec, full, nthr):
     """Transform the fixtures to world space and refresh the fixtures' and bodies' AABBs.
 
     Each AABB is fattened by m_i = spec/2 + dt (|v_i| + |w_i| r_i) of its body: two boxes
@@ -81,8 +84,14 @@ def update_geometry(B, F, V, n, nf, dt, spec, full):
 
     Unless ``full`` (after an edit, or a change of dt or of the speculative distance, which
     the caller says), static and sleeping bodies keep their geometry (``_kept``): the same
-    numbers, and a sleeping pile or a long static chain costs nothing here.
+    numbers, and a sleeping pile or a long static chain costs nothing here.  The fixtures are
+    transformed on ``nthr`` threads when there are many (each on its own: the same numbers);
+    the bodies' boxes are their union after.
     """
+    if nthr > 1 and nf >= MIN_BODIES * nthr:
+        _boxes_split(B, F, V, nf, dt, spec, full, nthr)
+    else:
+        _boxes(B, F, V, 0, nf, dt, spec, full)
     if full:
         for i in range(n):
             _clear_box(B, i)
@@ -95,6 +104,27 @@ def update_geometry(B, F, V, n, nf, dt, spec, full):
         i = F.body[f]
         if not full and _kept(B, F, f, i):
             continue
+        F.kind[f] = B.kind[i]
+        F.awake[f] = B.awake[i]
+        B.aabb[i, 0] = min(B.aabb[i, 0], F.aabb[f, 0])
+        B.aabb[i, 1] = min(B.aabb[i, 1], F.aabb[f, 1])
+        B.aabb[i, 2] = max(B.aabb[i, 2], F.aabb[f, 2])
+        B.aabb[i, 3] = max(B.aabb[i, 3], F.aabb[f, 3])
+
+
+@kernel(parallel=True)
+def _boxes_split(B, F, V, nf, dt, spec, full, nthr):
+    for t in prange(nthr):
+        _boxes(B, F, V, nf * t // nthr, nf * (t + 1) // nthr, dt, spec, full)
+
+
+@kernel
+def _boxes(B, F, V, f0, f1, dt, spec, full):
+    """Fixtures f0..f1-1 in world space, their fattened boxes into F.aabb (kept ones skipped)."""
+    for f in range(f0, f1):
+        i = F.body[f]
+        if not full and _kept(B, F, f, i):
+            continue
         c = math.cos(B.q[i])
         s = math.sin(B.q[i])
         margin = 0.5 * spec + dt * (math.hypot(B.v[i, 0], B.v[i, 1]) + abs(B.w[i]) * B.bound_r[i])
@@ -103,9 +133,3 @@ def update_geometry(B, F, V, n, nf, dt, spec, full):
         F.aabb[f, 1] = y0
         F.aabb[f, 2] = x1
         F.aabb[f, 3] = y1
-        F.kind[f] = B.kind[i]
-        F.awake[f] = B.awake[i]
-        B.aabb[i, 0] = min(B.aabb[i, 0], x0)
-        B.aabb[i, 1] = min(B.aabb[i, 1], y0)
-        B.aabb[i, 2] = max(B.aabb[i, 2], x1)
-        B.aabb[i, 3] = max(B.aabb[i, 3], y1)

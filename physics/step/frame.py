@@ -25,7 +25,7 @@ def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums, full):
     c = ctx[0]
     save_state(B, c.n, X, Q, Vel, W)
     guard_sums(B, S, c.n, c.ns, c.gx, c.gy, sums)
-    update_geometry(B, F, V, c.n, nf, c.dt, c.spec, full)
+    update_geometry(B, F, V, c.n, nf, c.dt, c.spec, full, c.threads)
 
 
 @kernel(entry=True)

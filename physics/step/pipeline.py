@@ -28,6 +28,7 @@ from ..constraints.joints.work import joint_work
 from ..errors import SimulationError
 from ..geometry.transform import update_geometry
 from ..store import DYNAMIC, KIND_NAMES, STATIC
+from ..threads import FORKED
 from .checkpoint import Checkpoint
 from .energy_guard import EnergyGuard
 from .events import StepEvents
@@ -53,6 +54,7 @@ class Pipeline:
         self.edits = 0  # edits so far (the query cache's key: physics/queries/cache.py)
         self.dirty = True  # the world's settings changed: refresh the context's settings
         self._dt = None
+        self._threads = 0  # the thread count last written into the context
         self._push_speed = None  # the context's push-out speed cap (the energy guard's allowance)
         self._no_keys = np.zeros(0, np.int64)
         self.one_call = OneCall()  # the step as one compiled call, where the mode has a driver
@@ -76,8 +78,13 @@ class Pipeline:
         self.refresh_settings(world, dt)
 
     def refresh_settings(self, world, dt: float) -> None:
-        """Write the step length and, when they changed, the world's settings into the context."""
+        """Write the step length and, when they changed, the world's settings into the context;
+        the thread count every step (a forked child runs one: threads.usable)."""
         ctx = self.ctx
+        t = 1 if FORKED[0] else world._threads  # (threads.usable, inline: this runs at every step)
+        if t != self._threads:
+            ctx.set("threads", t)
+            self._threads = t
         if dt != self._dt:
             ctx.set("dt", dt)
             ctx.set("inv_dt", 1.0 / dt)
@@ -93,7 +100,6 @@ class Pipeline:
             ctx.set("time_to_sleep", world.time_to_sleep)
             ctx.set("integrator", options.INTEGRATORS.index(world.integrator))
             ctx.set("narrowphase", options.NARROWPHASES.index(world.narrowphase))
-            ctx.set("threads", world.threads)
             self.dirty = False
 
     def params(self, world) -> ModeParams:
@@ -128,7 +134,7 @@ class Pipeline:
     def refresh_geometry(self, world, dt: float = 0.0) -> None:
         s = world._store
         update_geometry(s.bodies.view, s.fixtures.view, s.verts.view, s.bodies.n, s.fixtures.n, dt,
-                        world.speculative_distance, True)
+                        world.speculative_distance, True, 1)
 
     def collide(self, world, dt: float, geometry: bool = True) -> None:
         s = world._store
