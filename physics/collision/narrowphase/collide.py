@@ -43,7 +43,8 @@ def collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, s
     c = ctx[0]
     if c.threads > 1 and npairs >= MIN_PAIRS * c.threads:
         return _rows_split(ctx, B, F, V, pairs, order[:npairs], keys, C, P, n_prev, full)
-    return _rows(B, F, V, pairs, order[:npairs], keys, C, P, n_prev, c.narrowphase, full, c.dt, c.spec, 0, 0,
+    zero = np.int64(0)  # not a literal: _rows compiles once
+    return _rows(B, F, V, pairs, order[:npairs], keys, C, P, n_prev, c.narrowphase, full, c.dt, c.spec, zero, zero,
                  sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f)
 
 
