@@ -119,7 +119,8 @@ def _extras():
 
 def _step(solver, integrator, bp, *flags):
     """Three whole steps of the probe world (``full``: with the whole narrow phase; ``joints``:
-    with a joint), so the one-call step's variant for such a world is compiled too; with a
+    with a joint; ``threads``: with enough boxes for the driver with split loops, where this
+    machine runs more than one thread: physics/threads.py), so the one-call step's variant for such a world is compiled too; with a
     spring and without.  The driver is compiled here even where worlds wait for it (the
     sandbox: physics/step/one_call.py, ``compile_on_demand``)."""
     from .step.one_call import compile_on_demand
@@ -136,11 +137,22 @@ def _probe_steps(solver, integrator, bp, flags):
         w._store.contacts.full = "full" in flags
         if "joints" in flags:
             w.add_joint("revolute", w.bodies[2], w.bodies[1], anchor=(0.1, 1.0))
+        if "threads" in flags:
+            _crowd(w)
         for _ in range(3):
             w.step()
     w.render_data()
     w.contacts()
     w.query_point((0.0, 0.5))
+
+
+def _crowd(w):
+    """threads.SPLIT_SIZE boxes resting in rows on a floor beside the probe world's bodies."""
+    from . import Polygon, threads
+    w.add_body(Polygon.box(200, 1), kind="static", position=(150, -0.5))
+    per_row = 100
+    for k in range(threads.SPLIT_SIZE):
+        w.add_body(Polygon.box(1, 1), position=(52 + 1.01 * (k % per_row), 0.5 + 1.0 * (k // per_row)))
 
 
 def _joints(solver, integrator):
@@ -198,8 +210,9 @@ def units(world=None, modes=None) -> list[str]:
         out = [f"solve:{world.solver}:{world.integrator}", narrow, f"broad:{bp}", "guard", "frame"]
         if world._store.joints.n:
             out.append(f"joints:{world.solver}:{world.integrator}")
+        from .step.one_call import splits
         out.append(f"step:{world.solver}:{world.integrator}:{bp}" + (":full" if narrow != "narrow" else "")
-                   + (":joints" if world._store.joints.n else ""))
+                   + (":joints" if world._store.joints.n else "") + (":threads" if splits(world) else ""))
         return out
     modes = options.SOLVERS if modes is None else tuple(modes)
     out = []
@@ -214,6 +227,7 @@ def units(world=None, modes=None) -> list[str]:
     if options.DEFAULT_SOLVER in modes:  # the one-call step's variants the units above leave out
         out += [f"step:{options.DEFAULT_SOLVER}:{options.DEFAULT_INTEGRATOR}:brute" + v
                 for v in ("", ":full", ":joints", ":full:joints")]
+        out.append(f"step:{options.DEFAULT_SOLVER}:{options.DEFAULT_INTEGRATOR}:sweep:threads")  # a large world
     return out
 
 

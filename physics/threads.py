@@ -10,6 +10,11 @@ microsecond here; its fallback ("workqueue") takes ~100 us per region
 (../shared/notes/solver-speed.md), more than the work it would split, so without OpenMP or TBB
 the step stays on one thread.
 
+Only the one-call step splits (step/soft_driver.py), and only when the world is large enough to
+gain (``SPLIT_SIZE``): the split code is compiled into a second driver, so a small world does
+not pay for compiling numba's parallel loops.  The kernels take the thread count ``nthr`` as
+None (the serial build: numba prunes the split branches) or an int (``threads_of``).
+
 GNU OpenMP cannot run in a child that ``fork()`` made of a process that used it (numba stops
 the child: "fork() called from a process already using GNU OpenMP").  multiprocessing forks by
 default on Linux, so in such a child every world steps on one thread (``usable``), whatever
@@ -20,7 +25,9 @@ from __future__ import annotations
 import importlib
 import os
 
+from numba import types
 from numba.core import config
+from numba.extending import overload
 
 #: below this many bodies, manifold blocks (of colouring.LANES) or slots per thread, a loop
 #: runs on one thread: starting a parallel region costs about a microsecond, a block's solve
@@ -29,6 +36,9 @@ MIN_BODIES = 512
 MIN_BLOCKS = 24
 MIN_SLOTS = 256
 MIN_PAIRS = 256
+#: bodies or fixtures from which the one-call step is built with its split loops (two threads'
+#: worth of MIN_BODIES: below it no loop would split)
+SPLIT_SIZE = 2 * MIN_BODIES
 
 _LAYER: list = []
 FORKED = [False]  # this process is a fork of one whose OpenMP pool ran (module doc)
@@ -79,6 +89,20 @@ def available() -> int:
 def usable(n: int) -> int:
     """The threads a step asked to use ``n`` runs on in this process."""
     return 1 if FORKED[0] else n
+
+
+def threads_of(split, c):
+    """The thread count for the split loops: None when ``split`` is None (the serial build, in
+    which numba prunes them), else the step context ``c``'s count.  Resolved from the argument's
+    type while numba types the caller (store/optional.py says why a plain ``if`` would not do)."""
+    return None if split is None else c.threads
+
+
+@overload(threads_of, inline="always")
+def _threads_of(split, c):
+    if isinstance(split, types.NoneType):
+        return lambda split, c: None
+    return lambda split, c: c.threads
 
 
 def check(value) -> int:

@@ -61,7 +61,7 @@ class State:
 
     def collide(self, pairs, method="sat"):
         B, F, V = self.bodies.view, self.fixtures.view, self.verts.view
-        update_geometry(B, F, V, self.bodies.n, self.fixtures.n, DT, SPEC, True, 1)
+        update_geometry(B, F, V, self.bodies.n, self.fixtures.n, DT, SPEC, True, None)
         pairs = np.array(pairs, dtype=np.int32).reshape(-1, 2)
         ctx = StepContext()
         ctx.set("dt", DT)

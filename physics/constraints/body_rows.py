@@ -58,11 +58,13 @@ def load_velocities(B, n, SB):
 @kernel
 def integrate_row_velocities(B, n, SB, gx, gy, h, nthr):
     """Gravity and user forces on awake dynamic bodies, into the rows' velocities; split between
-    ``nthr`` threads for many bodies (each body on its own: the same numbers for any split)."""
-    if nthr > 1 and n >= MIN_BODIES * nthr:
-        _velocities_split(B, n, SB, gx, gy, h, nthr)
-    else:
-        _velocities(B, 0, n, SB, gx, gy, h)
+    ``nthr`` threads for many bodies (each body on its own: the same numbers for any split; None:
+    the serial build, physics/threads.py)."""
+    if nthr is not None:
+        if nthr > 1 and n >= MIN_BODIES * nthr:
+            _velocities_split(B, n, SB, gx, gy, h, nthr)
+            return
+    _velocities(B, 0, n, SB, gx, gy, h)
 
 
 @kernel(parallel=True)
@@ -84,10 +86,11 @@ def _velocities(B, i0, i1, SB, gx, gy, h):
 @kernel
 def integrate_row_positions(B, n, SB, h, PV, npv, nthr):
     """_positions over every body, split between ``nthr`` threads as integrate_row_velocities."""
-    if nthr > 1 and n >= MIN_BODIES * nthr:
-        _positions_split(B, n, SB, h, PV, npv, nthr)
-    else:
-        _positions(B, 0, n, SB, h, PV, npv)
+    if nthr is not None:
+        if nthr > 1 and n >= MIN_BODIES * nthr:
+            _positions_split(B, n, SB, h, PV, npv, nthr)
+            return
+    _positions(B, 0, n, SB, h, PV, npv)
 
 
 @kernel(parallel=True)

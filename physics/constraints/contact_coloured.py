@@ -275,8 +275,8 @@ def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp, nthr):
     """One pass (WARM, SOLVE or RELAX) over the colours in use, in solve order (colouring.py's
     ``bstart``: the blocks, and the manifold counts that tell how many lanes of a colour's last
     block are real); ``fp`` the friction_pass.  A colour's full blocks are solved side by side
-    in vector code, split between ``nthr`` threads when there are enough of them
-    (physics/threads.py); a last block that padding fills in part lane after lane over its real
+    in vector code, split between ``nthr`` threads when there are enough of them (None: the serial
+    build, physics/threads.py); a last block that padding fills in part lane after lane over its real
     lanes only (the same numbers: its lanes share no moving body), so a small scene does not pay
     for eight lanes per manifold."""
     S = SB.reshape(SB.size)  # the body rows as one flat array (row offsets in GA, GB)
@@ -290,12 +290,21 @@ def coloured_pass(kind, bstart, W_, WV, GA, GB, SB, inv_h, push, fp, nthr):
             _blocks(kind, b0, b1, last, W_, WV, GA, GB, S, inv_h, push, fp, np.int64(1))
             continue
         bf = b1 if last == L else b1 - 1  # the full blocks
-        if bf > b0 and nthr > 1 and bf - b0 >= MIN_BLOCKS * nthr:
-            _blocks_split(kind, b0, bf, nthr, W_, WV, GA, GB, S, inv_h, push, fp)
-        elif bf > b0:
+        if bf > b0 and not _split(kind, b0, bf, nthr, W_, WV, GA, GB, S, inv_h, push, fp):
             _blocks(kind, b0, bf, np.int64(L), W_, WV, GA, GB, S, inv_h, push, fp, None)
         if bf < b1:
             _blocks(kind, bf, b1, last, W_, WV, GA, GB, S, inv_h, push, fp, np.int64(1))
+
+
+@kernel
+def _split(kind, b0, b1, nthr, W_, WV, GA, GB, S, inv_h, push, fp):
+    """Full blocks b0..b1-1 split between ``nthr`` threads when there are enough (_blocks_split);
+    whether it did."""
+    if nthr is not None:
+        if nthr > 1 and b1 - b0 >= MIN_BLOCKS * nthr:
+            _blocks_split(kind, b0, b1, nthr, W_, WV, GA, GB, S, inv_h, push, fp)
+            return True
+    return False
 
 
 @kernel(parallel=True)

@@ -128,15 +128,16 @@ def _point(W, po, C, k, q, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvt
 
 
 @kernel
-def prepare_wide(ctx, par, B, C, order, slots, W, GA, GB):
+def prepare_wide(ctx, par, B, C, order, slots, W, GA, GB, nthr):
     """W, GA, GB for the slots 0..slots-1 from the manifolds and the bodies at the start of the
     step: what ``prepare_contacts`` then ``pack`` leave there, without the rows between; split
-    between ``c.threads`` threads for many slots (each slot on its own: the same numbers)."""
-    nthr = ctx[0].threads
-    if nthr > 1 and slots >= MIN_SLOTS * nthr:
-        _prepare_split(ctx, par, B, C, order, slots, W, GA, GB, nthr)
-    else:
-        _prepare(ctx[0], par[0], B, C, order, 0, slots, W, GA, GB)
+    between ``nthr`` threads for many slots (each slot on its own: the same numbers; None: the
+    serial build, physics/threads.py)."""
+    if nthr is not None:
+        if nthr > 1 and slots >= MIN_SLOTS * nthr:
+            _prepare_split(ctx, par, B, C, order, slots, W, GA, GB, nthr)
+            return
+    _prepare(ctx[0], par[0], B, C, order, 0, slots, W, GA, GB)
 
 
 @kernel(parallel=True)

@@ -86,11 +86,9 @@ def update_geometry(B, F, V, n, nf, dt, spec, full, nthr):
     the caller says), static and sleeping bodies keep their geometry (``_kept``): the same
     numbers, and a sleeping pile or a long static chain costs nothing here.  The fixtures are
     transformed on ``nthr`` threads when there are many (each on its own: the same numbers);
-    the bodies' boxes are their union after.
+    the bodies' boxes are their union after (``nthr`` None: the serial build, physics/threads.py).
     """
-    if nthr > 1 and nf >= MIN_BODIES * nthr:
-        _boxes_split(B, F, V, nf, dt, spec, full, nthr)
-    else:
+    if not _split(B, F, V, nf, dt, spec, full, nthr):
         _boxes(B, F, V, 0, nf, dt, spec, full)
     if full:
         for i in range(n):
@@ -110,6 +108,16 @@ def update_geometry(B, F, V, n, nf, dt, spec, full, nthr):
         B.aabb[i, 1] = min(B.aabb[i, 1], F.aabb[f, 1])
         B.aabb[i, 2] = max(B.aabb[i, 2], F.aabb[f, 2])
         B.aabb[i, 3] = max(B.aabb[i, 3], F.aabb[f, 3])
+
+
+@kernel
+def _split(B, F, V, nf, dt, spec, full, nthr):
+    """_boxes split between ``nthr`` threads when there are enough fixtures; whether it did."""
+    if nthr is not None:
+        if nthr > 1 and nf >= MIN_BODIES * nthr:
+            _boxes_split(B, F, V, nf, dt, spec, full, nthr)
+            return True
+    return False
 
 
 @kernel(parallel=True)

@@ -18,14 +18,15 @@ from .push_out import push_sum
 
 
 @kernel(entry=True)
-def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums, full):
+def begin_step(ctx, B, F, V, nf, X, Q, Vel, W, S, sums, full, nthr):
     """Save the last finite state, then refresh the ``nf`` fixtures' world geometry and AABBs
     (all of it when ``full``: update_geometry); the energy guard's sums of the state the step
-    starts from into ``sums`` (energy_sums.py)."""
+    starts from into ``sums`` (energy_sums.py).  ``nthr``: threads for the geometry (None: the
+    serial build, physics/threads.py)."""
     c = ctx[0]
     save_state(B, c.n, X, Q, Vel, W)
     guard_sums(B, S, c.n, c.ns, c.gx, c.gy, sums)
-    update_geometry(B, F, V, c.n, nf, c.dt, c.spec, full, c.threads)
+    update_geometry(B, F, V, c.n, nf, c.dt, c.spec, full, nthr)
 
 
 @kernel(entry=True)
@@ -58,7 +59,7 @@ def end_step(ctx, B, S, bad, why, Ca, Cb, nc, cluster, sums, key, npts, depth, j
 def begin_step_flat(ctx, BF, BI, FF, FI, ghost, wghost, VF, VI, nf, X, Q, Vel, W, SF, SI, sums):
     """``begin_step`` over the tables' flat arrays."""
     begin_step(ctx, bodies_view(BF, BI), fixtures_view(FF, FI, ghost, wghost), verts_view(VF, VI), nf,
-               X, Q, Vel, W, springs_view(SF, SI), sums, np.bool_(True))
+               X, Q, Vel, W, springs_view(SF, SI), sums, np.bool_(True), None)
 
 
 @kernel(entry=True, runtime=True)

@@ -21,6 +21,7 @@ from ..collision.narrowphase.kernel import manifold_scratch
 from ..constraints.joints.work import after_step, joint_work
 from ..constraints.rotation_cap import PIVOT_COLUMNS
 from ..errors import SimulationError
+from .. import threads
 from ..store.table import GENERATION
 from . import soft_driver as drv
 from .energy_bound import E_OUT, LIMIT_OUT
@@ -75,6 +76,14 @@ def compile_on_demand(on: bool) -> bool:
     return was
 
 
+def splits(world) -> bool:
+    """Whether the world's driver is built with its split loops: more than one thread here and
+    enough bodies or fixtures that a loop would split (threads.SPLIT_SIZE).  The count itself is
+    read at each step (the context's ``threads``)."""
+    s = world._store
+    return threads.usable(world._threads) > 1 and max(s.bodies.n, s.fixtures.n) >= threads.SPLIT_SIZE
+
+
 class OneCall:
     """The pack of one world and the Python side of its driver."""
 
@@ -117,7 +126,7 @@ class OneCall:
         vals = world._settings.get(mode.name)
         return (pl.edits, pl.python_steps, -1 if vals is None else vals.version, mode, GENERATION[0], s.joints.version,
                 s.contacts.full, world._max_pairs, world._pair_filter is None, world._n_sensors,
-                pl.events.sensors.active, world._broadphase)
+                pl.events.sensors.active, world._broadphase, world._threads)
 
     def build(self, world, pl, now: bool = False) -> None:
         """A pack of the world's arrays as they are, with room for the step's rows; with
@@ -169,7 +178,7 @@ class OneCall:
             tr.keys, tr._keys2, tr.begin, tr._begin2, tr._absent, tr._absent2,
             isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, self._v0(len(mode.SB)),
             JF, JI, JW, JS, kinds, s.springs.arrays.flat[0] if s.springs.n else None,
-            1 if c.full else None, self.sweep, wide)
+            1 if c.full else None, self.sweep, wide, 1 if splits(world) else None)
         self._waiting = None
         if not (_ON_DEMAND[0] or now):
             sig = pack_signature(values)

@@ -52,6 +52,9 @@ FIELDS = (
     # the coloured layout's scratch (solvers/soft_step/layout.py: ColouredScratch.pack_fields), None
     # in the rows layout
     "wide",
+    # 1 in a world large enough to split its loops between threads, None in the serial build
+    # (physics/threads.py: the driver for None contains no parallel loop)
+    "split",
 )
 
 

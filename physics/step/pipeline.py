@@ -134,7 +134,7 @@ class Pipeline:
     def refresh_geometry(self, world, dt: float = 0.0) -> None:
         s = world._store
         update_geometry(s.bodies.view, s.fixtures.view, s.verts.view, s.bodies.n, s.fixtures.n, dt,
-                        world.speculative_distance, True, 1)
+                        world.speculative_distance, True, None)
 
     def collide(self, world, dt: float, geometry: bool = True) -> None:
         s = world._store

@@ -27,6 +27,7 @@ from ..constraints.colouring import COLOURS, LANES
 from ..solvers.soft_step.coloured import colour_blocks, soft_step_wide
 from ..store.optional import optional_joints, optional_springs
 from ..store.table_type import make_table
+from ..threads import threads_of
 from .clock import cycles
 from .energy_bound import ACTIVE, guard_begin, guard_excess
 from .energy_sums import motor_power_of
@@ -138,10 +139,11 @@ def soft_world_step(P):
 @kernel
 def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, CAF, CAI, CApt, CBF, CBI, CBpt,
            pairs, exclude, pkeys, porder, mscratch, X, Q, V, W, bad, why, cluster, start, end, EK0, EK1, EB0, EB1,
-           EA0, EA1, parent, min_t, label, links, R, SB, V0, JF, JI, JW, JS, kinds, SS, full, sweep, wide):
+           EA0, EA1, parent, min_t, label, links, R, SB, V0, JF, JI, JW, JS, kinds, SS, full, sweep, wide, split):
     """The step over the pack's arrays (pack.FIELDS, in order): the stages of the module doc."""
     T[0] = cycles()
     c = ctx[0]
+    nthr = threads_of(split, c)  # None: the serial build (physics/threads.py)
     c.step = S[S_STEP]
     c.n = S[S_N]
     c.ns = S[S_NS]
@@ -152,7 +154,7 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     Vt = make_table("verts", (VF,))
     Sp = make_table("springs", (SF, SI))
     J = optional_joints(JF, JI)
-    begin_step(ctx, B, F, Vt, nf, X, Q, V, W, Sp, start, S[S_GEOM] != 0)
+    begin_step(ctx, B, F, Vt, nf, X, Q, V, W, Sp, start, S[S_GEOM] != 0, nthr)
     S[S_GEOM] = 0  # static and sleeping bodies keep their geometry until Python says otherwise
     p_start, dragged = _motors(J, B, nj)
     guard_begin(G, start, D[D_GROWTH], p_start, dragged)
@@ -180,7 +182,7 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     nc = 0  # no pairs, no rows: a lone body or a scattered world skips the narrow phase's call
     if npairs:
         sort_pairs(F.id, pairs, npairs, pkeys, porder)
-        nc = collide_with(ctx, B, F, Vt, pairs, npairs, C, Cp, S[S_NC], full, pkeys, porder, mscratch)
+        nc = collide_with(ctx, B, F, Vt, pairs, npairs, C, Cp, S[S_NC], full, pkeys, porder, mscratch, nthr)
         if nc < 0:
             return NEED_FULL
     short = _colour(B, C, c.n, nc, wide)  # before the swap: a grow of the blocks calls again
@@ -197,7 +199,7 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     # the soft step over the colouring _colour left in ``wide``: its blocks end at bstart[COLOURS]
     _, order, bstart, _, W, WV, GA, GB = wide
     S[S_BROKEN] = soft_step_wide(ctx, par, B, C, optional_springs(SS, SI), R, SB, J, JW, JS, V0, order, bstart,
-                                 bstart[COLOURS] * LANES, W, WV, GA, GB)
+                                 bstart[COLOURS] * LANES, W, WV, GA, GB, nthr)
     T[4] = cycles()
     if S[S_SLEEP]:
         S[S_NAWAKE] = update_islands(ctx, B, C, Sp, links[:_links(J, nj, links)], parent, min_t, label)

@@ -32,27 +32,28 @@ def collide_kernel(ctx, B, F, V, pairs, npairs, C, P, n_prev, full=None):
     keys = pair_keys(F, pairs, npairs)
     order = np.empty(npairs, np.int64)
     _order_into(keys, npairs, order)
-    return collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, manifold_scratch())
+    return collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, manifold_scratch(), None)
 
 
 @kernel
-def collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, scratch):
+def collide_with(ctx, B, F, V, pairs, npairs, C, P, n_prev, full, keys, order, scratch, nthr):
     """``collide_kernel`` with the pairs' ``keys`` and ``order[:npairs]`` given and the manifold
-    ``scratch`` (manifold_scratch's arrays) reused: the step driver keeps them between steps."""
+    ``scratch`` (manifold_scratch's arrays) reused: the step driver keeps them between steps;
+    split between ``nthr`` threads for many pairs (None: the serial build, physics/threads.py)."""
     sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f = scratch
     c = ctx[0]
-    if c.threads > 1 and npairs >= MIN_PAIRS * c.threads:
-        return _rows_split(ctx, B, F, V, pairs, order[:npairs], keys, C, P, n_prev, full)
+    if nthr is not None:
+        if nthr > 1 and npairs >= MIN_PAIRS * nthr:
+            return _rows_split(ctx, B, F, V, pairs, order[:npairs], keys, C, P, n_prev, full, nthr)
     zero = np.int64(0)  # not a literal: _rows compiles once
     return _rows(B, F, V, pairs, order[:npairs], keys, C, P, n_prev, c.narrowphase, full, c.dt, c.spec, zero, zero,
                  sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f)
 
 
 @kernel(parallel=True, runtime=True)
-def _rows_split(ctx, B, F, V, pairs, order, keys, C, P, n_prev, full):
+def _rows_split(ctx, B, F, V, pairs, order, keys, C, P, n_prev, full, nthr):
     """``_rows`` over ``order`` in one run per thread, each with its own scratch; the runs' rows
     then moved down into one sorted block.  -1 when any run met a pair the lean kernel leaves out."""
-    nthr = ctx[0].threads
     n = order.shape[0]
     ends = np.empty(nthr, np.int64)
     for t in prange(nthr):

@@ -84,16 +84,17 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
     if slots < 0:
         return slots
     V0 = np.empty((c.n, PIVOT_COLUMNS))
-    return soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB)
+    return soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB, None)
 
 
 @kernel
-def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB):
+def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB, nthr):
     """soft_step_coloured's step once the manifolds are coloured into ``slots`` slots (``order``,
     ``bstart``) and the blocks hold them: the one-call driver colours before the contact tables
     swap, so that a grow of the blocks can still call again.  ``V0``: scratch of at least n rows
     of PIVOT_COLUMNS (the sub-step's start velocities, which cap the bounces, and the pivots:
-    rotation_cap.py)."""
+    rotation_cap.py); ``nthr`` the thread count for the split loops, None in the serial build
+    (physics/threads.py)."""
     c = ctx[0]
     p = par[0]
     n = c.n
@@ -111,7 +112,7 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
         prepare_contacts(c, p, B, C, R)
         pack(C, R, order, slots, p.block_solver, W, GA, GB)
     else:
-        prepare_wide(ctx, par, B, C, order, slots, W, GA, GB)
+        prepare_wide(ctx, par, B, C, order, slots, W, GA, GB, nthr)
     if J is not None:
         if not p.warm_starting:
             zero_joint_impulses(J, c.nj)
@@ -125,26 +126,26 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
     warm, solve, relax = np.int64(WARM), np.int64(SOLVE), np.int64(RELAX)
     fresh = np.bool_(False)  # the joints' rows are those of the bodies' current positions (dispatch.refresh_rows)
     for _ in range(p.substeps):
-        integrate_row_velocities(B, n, SB, c.gx, c.gy, h, c.threads)
+        integrate_row_velocities(B, n, SB, c.gx, c.gy, h, nthr)
         if bouncy:
             save_velocities(SB, n, V0)
-        coloured_pass(warm, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass, c.threads)
+        coloured_pass(warm, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass, nthr)
         if J is not None:
             warm_start_joints(c, B, J, JW, JS, not fresh)
         for it in range(p.iterations):
-            coloured_pass(solve, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass, c.threads)
+            coloured_pass(solve, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass, nthr)
             if J is not None:
                 solve_joints(c, B, J, JW, JS, np.bool_(True), p.inv_h, eq_global)
         if S is not None and c.ns > 0:  # last before the move (module doc; S None: no springs)
             store_velocities(B, n, SB)
             solve_springs(B, S, c.ns, h)
             load_velocities(B, n, SB)
-        integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0), c.threads)
+        integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0), nthr)
         fresh = np.bool_(False)
         if project:
             project_joints(c, B, J, JW, JS)
         if p.relax:
-            coloured_pass(relax, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass, c.threads)
+            coloured_pass(relax, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass, nthr)
             if J is not None:
                 refresh_rows(c, B, J, JW, JS)  # the bodies moved: the rows where they are now
                 solve_joints(c, B, J, JW, JS, np.bool_(False), p.inv_h, eq_global)
