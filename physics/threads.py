@@ -1,9 +1,10 @@
 """How many threads a step may use (``World.threads``), and the threading layer under them.
 
-The step splits its wide loops (a colour's contact blocks, the bodies' integration, the
-manifolds' preparation) into one chunk per thread with numba's ``prange``; every chunk computes
-exactly what one thread would (the chunks share no body: Box2D v3's graph colouring), so the
-results are the same bits for any thread count.
+The step splits its wide loops (the broad phase's sweep, the narrow phase's pairs, the
+manifolds' preparation, a colour's contact blocks, the bodies' integration and geometry) into one
+chunk per thread with numba's ``prange``; every chunk computes exactly what one thread would (a
+colour's chunks share no moving body: Box2D v3's graph colouring), so the results are the same
+bits for any thread count.
 
 numba runs ``prange`` on a threading layer: OpenMP or TBB start a parallel region in about a
 microsecond here; its fallback ("workqueue") takes ~100 us per region

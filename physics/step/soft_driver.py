@@ -61,7 +61,7 @@ def _motors(J, B, nj):
 
 
 @kernel
-def _broad_phase(F, nf, pairs, swept, sweep):
+def _broad_phase(F, nf, pairs, swept, sweep, nthr):
     """The count of the fixtures' overlapping pairs: brute force, sorted into ``pairs``, or
     (``swept``) the sweep with the world's scratch, unsorted into its ``tmp``, which is as long
     as ``pairs``, so a count that fits one fits both.  A runtime choice, not an optional
@@ -69,7 +69,7 @@ def _broad_phase(F, nf, pairs, swept, sweep):
     if not swept:
         return brute_pairs(F, nf, pairs)
     state, order, key, b0, b1, bstart, ent, tmp, head = sweep
-    return sweep_emit(F, nf, state, order, key, b0, b1, bstart, ent, tmp)
+    return sweep_emit(F, nf, state, order, key, b0, b1, bstart, ent, tmp, nthr)
 
 
 @kernel
@@ -161,7 +161,7 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     if not _joints_ready(J, B, nj, kinds):
         return JOINT_KINDS
     T[1] = cycles()
-    npairs = _broad_phase(F, nf, pairs, S[S_SWEEP] != 0, sweep)
+    npairs = _broad_phase(F, nf, pairs, S[S_SWEEP] != 0, sweep, nthr)
     S[S_NEED] = npairs
     if npairs > S[S_LIMIT]:
         return TOO_MANY_PAIRS

@@ -19,8 +19,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba import prange
 
 from ..._jit import kernel
+from ...threads import MIN_BODIES
 from ...store import STATIC
 from ..argsort import argsort_into
 from .filter import can_pair, overlap, push
@@ -175,12 +177,13 @@ def _next_active(B, nb, bstart, ent, nxt):
 
 
 @kernel
-def _sweep_bands(B, nb, axis, b0, bstart, ent, nxt, tmp):
+def _sweep_bands(B, lo, hi, axis, b0, bstart, ent, nxt, tmp):
+    """The pairs of bands lo..hi-1 into ``tmp`` (as many as fit); returns their count."""
     aabb = B.aabb
     kind = B.kind
     awake = B.awake
     k = np.int64(0)  # not a literal: push compiles once
-    for b in range(nb):
+    for b in range(lo, hi):
         end = bstart[b + 1]
         for a in range(bstart[b], end):
             i = ent[a]
@@ -211,16 +214,60 @@ def sweep_pairs(B, n, state, order, key, b0, b1, bstart, ent, tmp, head, pairs):
     Scratch sizes: order/key/b0/b1 n, bstart n + 2, ent 6n (the bands' entries, then each
     entry's next active one), head n + 1.
     """
-    k = sweep_emit(B, n, state, order, key, b0, b1, bstart, ent, tmp)
+    k = sweep_emit(B, n, state, order, key, b0, b1, bstart, ent, tmp, None)
     if k <= tmp.shape[0] and k <= pairs.shape[0]:
         sort_pairs(tmp, k, n, head, pairs)
     return k
 
 
 @kernel
-def sweep_emit(B, n, state, order, key, b0, b1, bstart, ent, tmp):
+def _sweep(B, nb, axis, b0, bstart, ent, nxt, tmp, nthr):
+    """Every band's pairs into ``tmp``: split between ``nthr`` threads for many entries (None:
+    the serial build, physics/threads.py), each thread a run of bands into its own part of
+    ``tmp``, then the parts moved together.  The pairs are the same in any order, and the caller
+    sorts them (order.sort_pairs): the same pairs, in the same order, for any thread count.  A
+    part that overflows is swept again on one thread (its count is what the caller grows by)."""
+    if nthr is not None:
+        if nthr > 1 and bstart[nb] >= MIN_BODIES * nthr and nb >= nthr:
+            k = _sweep_split(B, nb, axis, b0, bstart, ent, nxt, tmp, nthr)
+            if k >= 0:
+                return k
+    return _sweep_bands(B, 0, nb, axis, b0, bstart, ent, nxt, tmp)
+
+
+@kernel(parallel=True, runtime=True)
+def _sweep_split(B, nb, axis, b0, bstart, ent, nxt, tmp, nthr):
+    """_sweep's split: thread t sweeps the bands whose entries start in its share of them into
+    tmp's t-th part; minus one when a part overflowed."""
+    cut = np.empty(nthr + 1, np.int64)  # the bands' runs, even in entries
+    cut[0] = 0
+    b = 0
+    for t in range(1, nthr):
+        while b < nb and bstart[b] < bstart[nb] * t // nthr:
+            b += 1
+        cut[t] = b
+    cut[nthr] = nb
+    cap = tmp.shape[0] // nthr
+    got = np.empty(nthr, np.int64)
+    for t in prange(nthr):
+        got[t] = _sweep_bands(B, cut[t], cut[t + 1], axis, b0, bstart, ent, nxt, tmp[t * cap:(t + 1) * cap])
+    k = got[0]
+    for t in range(nthr):
+        if got[t] > cap:
+            return -1
+    for t in range(1, nthr):
+        for q in range(got[t]):
+            tmp[k, 0] = tmp[t * cap + q, 0]
+            tmp[k, 1] = tmp[t * cap + q, 1]
+            k += 1
+    return k
+
+
+@kernel
+def sweep_emit(B, n, state, order, key, b0, b1, bstart, ent, tmp, nthr):
     """``sweep_pairs``' pairs in the sweep's order into ``tmp`` (as many as fit); returns the
-    total count.  The caller may drop some before sorting what is left (order.sort_pairs)."""
+    total count.  The caller may drop some before sorting what is left (order.sort_pairs).
+    ``nthr``: _sweep's."""
     aabb = B.aabb
     axis = _pick_axis(aabb, n)
     for i in range(n):
@@ -233,4 +280,4 @@ def sweep_emit(B, n, state, order, key, b0, b1, bstart, ent, tmp):
     _fill_bands(order, n, b0, b1, nb, bstart, ent)
     half = ent.shape[0] // 2
     _next_active(B, nb, bstart, ent, ent[half:])
-    return _sweep_bands(B, nb, axis, b0, bstart, ent, ent[half:], tmp)
+    return _sweep(B, nb, axis, b0, bstart, ent, ent[half:], tmp, nthr)
