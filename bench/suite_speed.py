@@ -2,7 +2,8 @@
 
 Every scene of ``bench.suite.SUITE`` (``shared/benchmarks.c`` rebuilt as scene descriptions)
 that Stelkropp can build runs in Stelkropp (soft_step defaults) with one thread and with two
-(``World.threads``), Box2D v3 with one thread and with two, and pymunk where its adapter can build the scene, interleaved chunk by chunk exactly
+(``World.threads``), Box2D v3 with one thread and with two, and pymunk where its adapter can
+build the scene, interleaved chunk by chunk exactly
 as ``python -m bench`` times its own scenes (bench/timing.py): ms/step is the median over the
 timed chunks, a ratio the median of the per-chunk ratios, the first step (compile) apart.
 A scene's ``bench`` script (rain's ragdoll events, junkyard's pusher drive) runs on our side

@@ -120,7 +120,8 @@ def _extras():
 def _step(solver, integrator, bp, *flags):
     """Three whole steps of the probe world (``full``: with the whole narrow phase; ``joints``:
     with a joint; ``threads``: with enough boxes for the driver with split loops, where this
-    machine runs more than one thread: physics/threads.py), so the one-call step's variant for such a world is compiled too; with a
+    machine runs more than one thread: physics/threads.py), so the one-call step's variant for
+    such a world is compiled too; with a
     spring and without.  The driver is compiled here even where worlds wait for it (the
     sandbox: physics/step/one_call.py, ``compile_on_demand``)."""
     from .step.one_call import compile_on_demand

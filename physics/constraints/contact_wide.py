@@ -146,8 +146,9 @@ def _prepare_split(ctx, par, B, C, order, slots, W, GA, GB, nthr):
     parameters come as their one-element arrays: numba hands no record to a parallel loop)."""
     nb = slots // LANES  # whole blocks: no two threads write one block's cache lines
     for t in prange(nthr):
-        _prepare(ctx[0], par[0], B, C, order, nb * t // nthr * LANES, slots if t + 1 == nthr else nb * (t + 1) // nthr * LANES,
-                 W, GA, GB)
+        lo = nb * t // nthr * LANES
+        hi = slots if t + 1 == nthr else nb * (t + 1) // nthr * LANES
+        _prepare(ctx[0], par[0], B, C, order, lo, hi, W, GA, GB)
 
 
 @kernel
