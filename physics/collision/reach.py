@@ -3,9 +3,8 @@ the step's broad phase also applies, so that pairs the narrow phase would drop u
 sorted or handed over."""
 from __future__ import annotations
 
-import math
-
 from .._jit import kernel
+from ..geometry.norm import length
 
 
 @kernel(forceinline=True)
@@ -33,4 +32,4 @@ def may_touch(B, a, b, dt, spec):
     reach = B.bound_r[a] + B.bound_r[b] + spec
     # written so that a non-finite motion (overflowing speeds) keeps the pair: the finite
     # check after the step must see what it does
-    return not (math.hypot(cx + t * dx, cy + t * dy) > reach)
+    return not (length(cx + t * dx, cy + t * dy) > reach)

@@ -7,6 +7,7 @@ from numba import prange
 
 from .._jit import kernel
 from ..threads import MIN_BODIES
+from .norm import length
 from ..store.bodies import STATIC
 from ..store.fixtures import CHAIN_SEGMENT, CIRCLE
 
@@ -135,7 +136,7 @@ def _boxes(B, F, V, f0, f1, dt, spec, full):
             continue
         c = math.cos(B.q[i])
         s = math.sin(B.q[i])
-        margin = 0.5 * spec + dt * (math.hypot(B.v[i, 0], B.v[i, 1]) + abs(B.w[i]) * B.bound_r[i])
+        margin = 0.5 * spec + dt * (length(B.v[i, 0], B.v[i, 1]) + abs(B.w[i]) * B.bound_r[i])
         x0, y0, x1, y1 = _fixture_box(F, V, f, B.x[i, 0], B.x[i, 1], c, s, margin)
         F.aabb[f, 0] = x0
         F.aabb[f, 1] = y0

@@ -17,6 +17,7 @@ import math
 import numpy as np
 
 from ..._jit import kernel
+from ...geometry.norm import length
 from ...geometry.shapes import MAX_POLYGON_VERTICES
 from ...store.fixtures import CHAIN_SEGMENT, CIRCLE, POLYGON
 from ..argsort import argsort_into
@@ -53,7 +54,7 @@ def pair_keys_into(fid, pairs, npairs, keys):
 @kernel(forceinline=True)
 def pair_margin(B, a, b, dt, spec):
     """spec + dt (|v_a - v_b| + |w_a| r_a + |w_b| r_b): how close can get in a step."""
-    dv = math.hypot(B.v[a, 0] - B.v[b, 0], B.v[a, 1] - B.v[b, 1])
+    dv = length(B.v[a, 0] - B.v[b, 0], B.v[a, 1] - B.v[b, 1])
     return spec + dt * (dv + abs(B.w[a]) * B.bound_r[a] + abs(B.w[b]) * B.bound_r[b])
 
 
