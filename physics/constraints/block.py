@@ -20,7 +20,7 @@ from .._jit import kernel
 MAX_CONDITION = 1000.0  # k11^2 / det above this: the points are (nearly) redundant
 
 
-@kernel(forceinline=True)
+@kernel(forceinline=True, error_model="numpy")
 def block_mass(k11, k12, k22):
     """(well conditioned, 1 / det K) of K = [[k11, k12], [k12, k22]]."""
     det = k11 * k22 - k12 * k12

@@ -4,8 +4,8 @@ The verbs every constraint kind speaks, for contacts: prepare (once per step), w
 solve (with bias; without bias it is the relax pass), restitution
 (constraints/contact_restitution.py) and store.  The passes run colour by colour over the wide
 blocks (constraints/contact_coloured.py, contact_wide.py); this module holds what they share:
-the prepared terms of a point and a manifold (``prepared_point``, ``prepared_softness``,
-``prepared_block``), the deep-overlap bias, the friction pass rule, and the scratch rows ``R``
+the prepared terms of a point and a manifold (``prepared_point``/``point_terms``,
+``prepared_softness``, ``prepared_block``), the deep-overlap bias, the friction pass rule, and the scratch rows ``R``
 (``prepare_contacts``, ``store_impulses``) that restitution reads and writes.  The model: soft
 normal rows with bias (constraints/softness.py), relax, Coulomb friction, the 2x2 block solver
 of constraints/block.py, restitution.
@@ -97,12 +97,22 @@ def manifold_state(B, C, k):
 
 @kernel(forceinline=True)
 def prepared_point(C, k, q, xax, xay, xbx, xby, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed):
-    """Point q of manifold k at the start of the step: (r_a x n, r_b x n, r_a . n, r_b . n, normal
-    mass, tangent mass, separation, normal speed, friction coefficient); the module doc's terms."""
-    rax = C.point[k, q, 0] - xax
-    ray = C.point[k, q, 1] - xay
-    rbx = C.point[k, q, 0] - xbx
-    rby = C.point[k, q, 1] - xby
+    """Point q of manifold k at the start of the step: ``point_terms`` of its point and depth."""
+    return point_terms(C.point[k, q, 0], C.point[k, q, 1], C.depth[k, q], C.mu_s[k], C.mu_d[k], xax, xay, xbx, xby,
+                       nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed)
+
+
+@kernel(forceinline=True, error_model="numpy")
+def point_terms(px, py, depth, mu_s, mu_d, xax, xay, xbx, xby, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb,
+                stick_speed):
+    """A contact point at (px, py), ``depth`` deep, at the start of the step: (r_a x n, r_b x n,
+    r_a . n, r_b . n, normal mass, tangent mass, separation, normal speed, friction coefficient);
+    the module doc's terms.  Plain numbers in and out and numpy's division (no exception branch)
+    keep the wide preparation's lane loop vector code (contact_prepare.py)."""
+    rax = px - xax
+    ray = py - xay
+    rbx = px - xbx
+    rby = py - xby
     rna = rax * ny - ray * nx
     rnb = rbx * ny - rby * nx
     rta = rax * nx + ray * ny
@@ -111,8 +121,8 @@ def prepared_point(C, k, q, xax, xay, xbx, xby, nx, ny, ima, imb, iia, iib, dvnx
     kt = ima + imb + iia * rta * rta + iib * rtb * rtb
     vt = dvtx + wb * rtb - wa * rta
     # Coulomb (seed eq. 23): static coefficient while sticking, dynamic once sliding
-    mu = C.mu_s[k] if abs(vt) <= stick_speed else C.mu_d[k]
-    return (rna, rnb, rta, rtb, 1.0 / kn if kn > 0.0 else 0.0, 1.0 / kt if kt > 0.0 else 0.0, -C.depth[k, q],
+    mu = mu_s if abs(vt) <= stick_speed else mu_d
+    return (rna, rnb, rta, rtb, 1.0 / kn if kn > 0.0 else 0.0, 1.0 / kt if kt > 0.0 else 0.0, -depth,
             dvnx + wb * rnb - wa * rna, mu)
 
 
@@ -129,7 +139,7 @@ def prepared_softness(p, B, C, k, a, b, ima, imb, g):
     return rigid, rate, mscale, iscale, DEEP * moving_size(ima, imb, B.bound_r[a], B.bound_r[b])
 
 
-@kernel(forceinline=True)
+@kernel(forceinline=True, error_model="numpy")
 def prepared_block(ima, imb, iia, iib, ra0, rb0, ra1, rb1):
     """(k11, k22, k12, well conditioned, 1 / det K) of a two-point manifold (constraints/block.py)."""
     im = ima + imb

@@ -29,7 +29,7 @@ MAX_RATIO = 10.0    # moving pairs with a larger mass ratio keep the mode's freq
 MAX_LOAD = 50.0     # loads accelerating the pair by more than this many g keep it too
 
 
-@kernel(forceinline=True)
+@kernel(forceinline=True, error_model="numpy")
 def moving_size(ima, imb, ra, rb):
     """The smaller bounding radius of the pair's moving bodies (inverse mass > 0)."""
     if ima > 0.0 and imb > 0.0:
@@ -37,7 +37,7 @@ def moving_size(ima, imb, ra, rb):
     return ra if ima > 0.0 else rb
 
 
-@kernel(forceinline=True)
+@kernel(forceinline=True, error_model="numpy")
 def contact_hertz(hertz, load, ima, imb, ra, rb, h, g):
     """Frequency (Hz) of a contact: the mode's ``hertz``, raised for the ``load`` (N s per
     sub-step, all points) so that its deflection stays below DEFLECTION of the smaller moving

@@ -11,28 +11,23 @@ as the blocks (``WV[(b * VW + v) * LANES + l]``), and reads the inverse masses f
 body rows: velocities and masses kept in float64 keep linear momentum exact (through float32
 slots a pass lost 5e-8 of it, and a squeeze gained 4e-8 of its energy).
 
-``prepare_wide`` prepares a step's manifolds straight into the blocks (the same terms as
-contact_soft.prepare_contacts, through its helpers) and ``store_wide`` hands the impulses back to
-the contact table: a step without a bouncy contact never writes the rows ``R``.  Restitution works
+constraints/contact_prepare.py prepares a step's manifolds straight into the blocks (the same
+terms as contact_soft.prepare_contacts, through its helpers; it stages its inputs in ``WV``'s
+tail, after the velocities) and ``store_wide`` hands the impulses back to the contact table: a step without a bouncy contact never writes the rows ``R``.  Restitution works
 on the rows, so a step with a bouncy contact prepares ``R`` and ``pack`` copies it into the blocks;
 ``unpack`` copies what the passes accumulated (impulses, first-touch speeds, largest impulses,
 energy) back into ``R`` for restitution and the store, in a sub-step where ``bounce_due`` finds a
 point that may bounce; ``repack_normal`` takes restitution's impulses back.  Padding lanes
-(``order`` -1, only in a colour's last block) are never written or read: the passes solve a last
-block over its real lanes only (contact_coloured.coloured_pass).
+(``order`` -1, only in a colour's last block) are never read: the passes solve a last block over
+its real lanes only (contact_coloured.coloured_pass).
 """
 from __future__ import annotations
 
-import math
-
 import numpy as np
-from numba import prange
 
 from .._jit import kernel
-from ..threads import MIN_SLOTS
 from .body_rows import NB
 from .colouring import LANES
-from .contact_soft import manifold_state, prepared_block, prepared_point, prepared_softness
 from .contact_soft import (BLOCK, INV_DET, JN, JT, K11, K12, K22, KE0 as R_KE0, MASS_N, MASS_T, MAXJ, MU,
                            NX as R_NX, NY as R_NY, PT, RNA, RNB, RTA, RTB, SEP0, SOFT, VN0, DEEPD)
 
@@ -104,92 +99,6 @@ def pack(C, R, order, slots, block_solver, W, GA, GB):
         W[o + W_DEEP * LANES] = R[k, DEEPD]
         W[o + W_KE0 * LANES] = R[k, R_KE0]
         W[o + W_BOUNCY * LANES] = 1.0 if C.e[k] != 0.0 else 0.0
-
-
-@kernel(forceinline=True)
-def _point(W, po, C, k, q, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed):
-    """Point q of manifold k prepared into its fields at po + f * LANES; returns its arms across
-    the normal (r_a x n, r_b x n) for the block solver."""
-    rna, rnb, rta, rtb, mn, mt, sep, vn0, mu = prepared_point(C, k, q, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib,
-                                                              dvnx, dvtx, wa, wb, stick_speed)
-    W[po + W_RNA * LANES] = rna
-    W[po + W_RNB * LANES] = rnb
-    W[po + W_RTA * LANES] = rta
-    W[po + W_RTB * LANES] = rtb
-    W[po + W_MN * LANES] = mn
-    W[po + W_MT * LANES] = mt
-    W[po + W_SEP * LANES] = sep
-    W[po + W_MU * LANES] = mu
-    W[po + W_VN0 * LANES] = vn0
-    W[po + W_MAXJ * LANES] = 0.0
-    W[po + W_JN * LANES] = C.jn[k, q]
-    W[po + W_JT * LANES] = C.jt[k, q]
-    return rna, rnb
-
-
-@kernel
-def prepare_wide(ctx, par, B, C, order, slots, W, GA, GB, nthr):
-    """W, GA, GB for the slots 0..slots-1 from the manifolds and the bodies at the start of the
-    step: what ``prepare_contacts`` then ``pack`` leave there, without the rows between; split
-    between ``nthr`` threads for many slots (each slot on its own: the same numbers; None: the
-    serial build, physics/threads.py)."""
-    if nthr is not None:
-        if nthr > 1 and slots >= MIN_SLOTS * nthr:
-            _prepare_split(ctx, par, B, C, order, slots, W, GA, GB, nthr)
-            return
-    _prepare(ctx[0], par[0], B, C, order, 0, slots, W, GA, GB)
-
-
-@kernel(parallel=True)
-def _prepare_split(ctx, par, B, C, order, slots, W, GA, GB, nthr):
-    """prepare_wide's slots in chunks of whole blocks, one per thread (the context and the
-    parameters come as their one-element arrays: numba hands no record to a parallel loop)."""
-    nb = slots // LANES  # whole blocks: no two threads write one block's cache lines
-    for t in prange(nthr):
-        lo = nb * t // nthr * LANES
-        hi = slots if t + 1 == nthr else nb * (t + 1) // nthr * LANES
-        _prepare(ctx[0], par[0], B, C, order, lo, hi, W, GA, GB)
-
-
-@kernel
-def _prepare(c, p, B, C, order, j0, j1, W, GA, GB):
-    stick_speed = p.stick_speed
-    g = math.hypot(c.gx, c.gy)
-    for j in range(j0, j1):
-        k = order[j]
-        if k < 0:  # padding
-            continue
-        o = _at(j, 0)  # field f of slot j at o + f * LANES
-        a, b, nx, ny, ima, imb, iia, iib, wa, wb, dvnx, dvtx = manifold_state(B, C, k)
-        GA[j] = a * NB
-        GB[j] = b * NB
-        cnt = C.count[k]
-        xa, ya, xb, yb = B.x[a, 0], B.x[a, 1], B.x[b, 0], B.x[b, 1]
-        ra0, rb0 = _point(W, o, C, k, 0, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa, wb, stick_speed)
-        k11 = k22 = k12 = inv_det = 0.0
-        use = False
-        if cnt == 2:
-            ra1, rb1 = _point(W, o + PW * LANES, C, k, 1, xa, ya, xb, yb, nx, ny, ima, imb, iia, iib, dvnx, dvtx, wa,
-                              wb, stick_speed)
-            k11, k22, k12, ok, inv_det = prepared_block(ima, imb, iia, iib, ra0, rb0, ra1, rb1)
-            use = p.block_solver and ok
-        else:
-            for f in range(PW):
-                W[o + (PW + f) * LANES] = 0.0
-        W[o + W_NX * LANES] = nx
-        W[o + W_NY * LANES] = ny
-        _, rate, msc, isc, deep = prepared_softness(p, B, C, k, a, b, ima, imb, g)
-        W[o + W_K11 * LANES] = k11
-        W[o + W_K22 * LANES] = k22
-        W[o + W_K12 * LANES] = k12
-        W[o + W_INVDET * LANES] = inv_det if use else 0.0
-        W[o + W_BLOCK * LANES] = 1.0 if use else 0.0
-        W[o + W_RATE * LANES] = rate
-        W[o + W_MSC * LANES] = msc
-        W[o + W_ISC * LANES] = isc
-        W[o + W_DEEP * LANES] = deep
-        W[o + W_KE0 * LANES] = 0.0  # set by the first biased pass of a bouncy pair; none here
-        W[o + W_BOUNCY * LANES] = 0.0
 
 
 @kernel

@@ -17,7 +17,7 @@ import math
 from .._jit import kernel
 
 
-@kernel(entry=True)
+@kernel(entry=True, forceinline=True, error_model="numpy")
 def softness(hertz, zeta, h):
     """(bias_rate, mass_scale, impulse_scale) of a soft constraint; hertz 0 = rigid."""
     if hertz <= 0.0:

@@ -33,7 +33,7 @@ without joints passes None for all three and the kernel is compiled without them
 springs passes None for ``S`` (store/optional.py).
 
 The manifolds are prepared straight into the blocks and their impulses stored from them
-(contact_wide.prepare_wide, store_wide).  Restitution works on the rows ``R``
+(contact_prepare.prepare_wide, contact_wide.store_wide).  Restitution works on the rows ``R``
 (constraints/contact_soft.py): a step with a bouncy contact prepares the rows, packs them into
 the blocks, and copies what the passes accumulated back before restitution (in a sub-step where
 a point may bounce; it then hands its impulses back) and before the store.
@@ -47,9 +47,10 @@ from ...constraints.colouring import FLAGS, VIA_ROWS, colour_contacts
 from ...constraints.body_rows import (gather_bodies, integrate_row_positions, integrate_row_velocities,
                                       load_velocities, store_velocities)
 from ...constraints.contact_coloured import RELAX, SOLVE, WARM, coloured_pass
+from ...constraints.contact_prepare import prepare_wide
 from ...constraints.contact_restitution import restitution_contacts
 from ...constraints.contact_soft import prepare_contacts, store_impulses
-from ...constraints.contact_wide import bounce_due, pack, prepare_wide, repack_normal, store_wide, unpack
+from ...constraints.contact_wide import bounce_due, pack, repack_normal, store_wide, unpack
 from ...constraints.joints.dispatch import (project_joints, refresh_rows, solve_joints, store_joints,
                                             warm_start_joints)
 from ...constraints.joints.prepare import prepare_joints, zero_joint_impulses
@@ -112,7 +113,7 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
         prepare_contacts(c, p, B, C, R)
         pack(C, R, order, slots, p.block_solver, W, GA, GB)
     else:
-        prepare_wide(ctx, par, B, C, order, slots, W, GA, GB, nthr)
+        prepare_wide(ctx, par, B, C, order, slots, W, WV, GA, GB, nthr)
     if J is not None:
         if not p.warm_starting:
             zero_joint_impulses(J, c.nj)

@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...constraints.colouring import BSTART, COLOURS, LANES
+from ...constraints.contact_prepare import T_SIZE
 from ...constraints.contact_wide import BLOCK_SIZE, V_SIZE
 from .coloured import soft_step_coloured
 
@@ -33,7 +34,9 @@ class ColouredScratch:
 
     def _wide(self, slots: int) -> None:
         self.W = np.zeros(slots // LANES * BLOCK_SIZE, np.float32)
-        self.WV = np.zeros(slots // LANES * V_SIZE)  # the lanes' new velocities: float64 (contact_wide.py)
+        # the lanes' new velocities (float64: contact_wide.py), then the preparation's staging
+        # (contact_prepare.py)
+        self.WV = np.zeros(slots // LANES * (V_SIZE + T_SIZE))
         self.GA = np.zeros(slots, np.uint64)
         self.GB = np.zeros(slots, np.uint64)
 
