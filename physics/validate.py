@@ -71,8 +71,18 @@ def _pair_like(value) -> bool:
         return False
 
 
+_PLAIN = (float, int)  # not bool: type(True) is bool
+_BIG_INT = 1e308  # ints beyond the float range take the slow path (its error)
+
+
 def finite_vec(value, field: str) -> np.ndarray:
     """A pair of finite numbers as a float64 array, or ValueError naming ``field``."""
+    if type(value) in (tuple, list) and len(value) == 2:  # the common case, without numpy's checks
+        a, b = value
+        if type(a) in _PLAIN and type(b) in _PLAIN and -_BIG_INT < a < _BIG_INT and -_BIG_INT < b < _BIG_INT:
+            fa, fb = float(a), float(b)
+            if math.isfinite(fa) and math.isfinite(fb):
+                return np.array((fa, fb))
     if isinstance(value, np.ndarray) and value.dtype.kind in "iuf" and value.size == 2:
         items = list(value.reshape(2))
     elif _pair_like(value):

@@ -128,7 +128,7 @@ class Table:
         """Append a zeroed entry; returns (id, slot)."""
         self._ensure(self.n + 1)
         s = self.n
-        for a in self.arrays.values():
+        for a in self.arrays.flat:  # every field is a view of these (Columns): a row each
             a[s] = 0
         oid = self._next_id
         self._next_id += 1
@@ -142,7 +142,7 @@ class Table:
         calls of ``add`` would."""
         self._ensure(self.n + k)
         slots = range(self.n, self.n + k)
-        for a in self.arrays.values():
+        for a in self.arrays.flat:
             a[slots.start:slots.stop] = 0
         ids = list(range(self._next_id, self._next_id + k))
         self._next_id += k
@@ -156,7 +156,7 @@ class Table:
         s = self.slot_of.pop(oid)
         last = self.n - 1
         if s != last:
-            for a in self.arrays.values():
+            for a in self.arrays.flat:
                 a[s] = a[last]
             self.slot_of[int(self.arrays["id"][s])] = s
         self.n -= 1
