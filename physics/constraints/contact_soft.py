@@ -5,8 +5,9 @@ solve (with bias; without bias it is the relax pass), restitution
 (constraints/contact_restitution.py) and store.  The passes run colour by colour over the wide
 blocks (constraints/contact_coloured.py, contact_wide.py); this module holds what they share:
 the prepared terms of a point and a manifold (``prepared_point``/``point_terms``,
-``prepared_softness``, ``prepared_block``), the deep-overlap bias, the friction pass rule, and the scratch rows ``R``
-(``prepare_contacts``, ``store_impulses``) that restitution reads and writes.  The model: soft
+``prepared_softness``, ``prepared_block``), the deep-overlap bias, the friction pass rule, and
+the scratch rows ``R`` (``prepare_contacts``, ``store_impulses``) that restitution reads and
+writes.  The model: soft
 normal rows with bias (constraints/softness.py), relax, Coulomb friction, the 2x2 block solver
 of constraints/block.py, restitution.
 
