@@ -108,8 +108,6 @@ class FixturesMixin:
     def _new_fixtures(self, body, shapes, density, e, mu_s, mu_d) -> list:
         """Fixture rows of one material for ``shapes`` at once (what ``_new_fixture`` makes for
         each, with the default filter and no name: add_body's 100,000 chain segments)."""
-        if len(shapes) == 1:  # one shape (most bodies): single elements, no lists
-            return [self._one_fixture(body, shapes[0], density, e, mu_s, mu_d)]
         ids, rows = self._store.fixtures.add_many(len(shapes))
         F = self._store.fixtures.view
         r = slice(rows.start, rows.stop)
@@ -121,19 +119,6 @@ class FixturesMixin:
         out = [Fixture(self, fid, sh, body) for fid, sh in zip(ids, shapes)]
         self._fixture_handles.update(zip(ids, out))
         return out
-
-    def _one_fixture(self, body, shape, density, e, mu_s, mu_d) -> Fixture:
-        """``_new_fixtures`` of one shape, element by element (the same row)."""
-        fid, f = self._store.fixtures.add()
-        F = self._store.fixtures.view
-        F.body[f] = body._s
-        F.shape[f] = shape_code(shape)
-        F.radius[f] = shape.radius
-        F.density[f], F.e[f], F.mu_s[f], F.mu_d[f] = density, e, mu_s, mu_d
-        F.category[f], F.mask[f] = DEFAULT_CATEGORY, ALL_BITS
-        h = Fixture(self, fid, shape, body)
-        self._fixture_handles[fid] = h
-        return h
 
     def _drop_fixture_row(self, fx: Fixture) -> None:
         F = self._store.fixtures.view
