@@ -42,3 +42,17 @@ def test_one_polygon_matches_the_batch_path():
                 x = pool.arrays[field][a:a + k]
                 y = pool.arrays[field][b:b + k]
                 assert np.array_equal(x.view(np.uint64), y.view(np.uint64)), (k, field)
+
+
+def test_set_gives_the_batch_paths_normals():
+    """``set`` (a body's centre of mass moved) rewrites vertices and normals as ``add_many`` makes them."""
+    pool = VertexPool()
+    rng = np.random.default_rng(9)
+    for k in (2, 3, 4, 7):
+        p = rng.standard_normal((k, 2))
+        a = int(pool.add_many([p, p])[0])
+        b = int(pool.add_many([rng.standard_normal((k, 2)), p])[0])
+        pool.set(b, p)
+        for field in ("local", "normal"):
+            assert np.array_equal(pool.arrays[field][a:a + k].view(np.uint64),
+                                  pool.arrays[field][b:b + k].view(np.uint64)), (k, field)

@@ -48,7 +48,7 @@ class VertexPool:
         """Append several polygons at once (a chain's 100,000 segments: one numpy pass, not one call
         each); returns their starts.  The normals are those ``add`` gives, to the bit."""
         if len(polygons) == 1:  # one body's shape: the same numbers without the batch's bookkeeping
-            return np.array([self._add_one(polygons[0])], np.int64)
+            return np.array([self.add(polygons[0])], np.int64)
         counts = np.array([len(p) for p in polygons], dtype=np.int64)
         total = int(counts.sum())
         if self.top + total > len(self.arrays["local"]):
@@ -69,35 +69,20 @@ class VertexPool:
         self.live += total
         return starts + s
 
-    def _add_one(self, local: np.ndarray) -> int:
-        """``add_many`` of one polygon (its start): the edge to the next vertex, the last to the first."""
+    def set(self, s: int, local: np.ndarray) -> None:
+        """Overwrite the vertices at ``s`` (same count) and their edge normals, e.g. after the
+        body's centre of mass moved."""
         local = np.asarray(local, dtype=np.float64)
         k = len(local)
-        if self.top + k > len(self.arrays["local"]):
-            self.arrays = grown(self.arrays, max(self.top + k, 2 * len(self.arrays["local"])))
-            self.view = Verts(**self.arrays)
+        self.arrays["local"][s:s + k] = local
+        # the edge to the next vertex, the last to the first (np.roll's, without its copies)
         e = np.empty_like(local)
         np.subtract(local[1:], local[:-1], out=e[:-1])
         np.subtract(local[0], local[-1], out=e[-1])
-        s = self.top
         nrm = self.arrays["normal"][s:s + k]
         nrm[:, 0] = e[:, 1]
         nrm[:, 1] = -e[:, 0]
         nrm /= np.hypot(nrm[:, 0], nrm[:, 1])[:, None]
-        self.arrays["local"][s:s + k] = local
-        self.top += k
-        self.live += k
-        return s
-
-    def set(self, s: int, local: np.ndarray) -> None:
-        """Overwrite the vertices at ``s`` (same count) and their edge normals, e.g. after the
-        body's centre of mass moved."""
-        k = len(local)
-        self.arrays["local"][s:s + k] = local
-        e = np.roll(local, -1, axis=0) - local
-        nrm = np.stack([e[:, 1], -e[:, 0]], axis=1)
-        nrm /= np.hypot(nrm[:, 0], nrm[:, 1])[:, None]
-        self.arrays["normal"][s:s + k] = nrm
 
     def release(self, count: int) -> None:
         self.live -= count
