@@ -35,6 +35,7 @@ import time
 from pathlib import Path
 
 from .paths import ROOT
+from .xvfb import start_xvfb
 
 
 def load() -> str:
@@ -42,18 +43,6 @@ def load() -> str:
     return f"load {os.getloadavg()[0]:.2f} on {os.cpu_count()} cores"
 
 
-def _start_xvfb():
-    for n in range(160, 400):
-        if not Path(f"/tmp/.X11-unix/X{n}").exists() and not Path(f"/tmp/.X{n}-lock").exists():
-            proc = subprocess.Popen(["Xvfb", f":{n}", "-screen", "0", "1280x800x24", "-nolisten", "tcp"],
-                                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-            t0 = time.monotonic()
-            while not Path(f"/tmp/.X11-unix/X{n}").exists():
-                if proc.poll() is not None or time.monotonic() - t0 > 20:
-                    raise RuntimeError(f"Xvfb :{n} did not start")
-                time.sleep(0.05)
-            return proc, f":{n}"
-    raise RuntimeError("no free X display number")
 
 
 def cpu_seconds(pid: int) -> tuple[float, float]:
@@ -179,7 +168,7 @@ def main(argv=None) -> int:
     xvfb = None
     display = os.environ.get("DISPLAY")
     if not display:
-        xvfb, display = _start_xvfb()
+        xvfb, display = start_xvfb()
     results = []
     try:
         for rep in range(args.repeat):

@@ -11,11 +11,12 @@ import re
 import shutil
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
 import pytest
+
+from bench.xvfb import start_xvfb
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
@@ -123,18 +124,10 @@ def test_compare_solvers_both_modes_hold_the_pyramid(tmp_path):
 def _xvfb(tmp_path):
     if shutil.which("Xvfb") is None:
         pytest.fail("the pyglet example needs Xvfb: apt-get install -y xvfb (.ci/run installs it)", pytrace=False)
-    for n in range(400, 700):
-        if not Path(f"/tmp/.X11-unix/X{n}").exists() and not Path(f"/tmp/.X{n}-lock").exists():
-            break
-    proc = subprocess.Popen(["Xvfb", f":{n}", "-screen", "0", "1280x800x24", "-nolisten", "tcp"],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    t0 = time.monotonic()
-    while not Path(f"/tmp/.X11-unix/X{n}").exists():
-        if proc.poll() is not None or time.monotonic() - t0 > 20:
-            proc.kill()
-            pytest.fail(f"Xvfb :{n} did not start", pytrace=False)
-        time.sleep(0.05)
-    return proc, f":{n}"
+    try:
+        return start_xvfb()
+    except RuntimeError as exc:
+        pytest.fail(str(exc), pytrace=False)
 
 
 @pytest.mark.app

@@ -17,6 +17,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from bench.xvfb import start_xvfb
+
 ROOT = Path(__file__).resolve().parents[2]
 INSTALL = ("apt-get install -y xvfb xauth libgl1-mesa-dri libegl1 libegl-mesa0 libglu1-mesa "
            "x11-utils imagemagick mesa-utils xdotool")
@@ -29,13 +31,6 @@ def _need(tool):
         pytest.fail(f"sandbox tests need `{tool}` (not found on PATH); install with: {INSTALL}", pytrace=False)
 
 
-def _free_display() -> int:
-    for n in range(90, 400):
-        if not Path(f"/tmp/.X11-unix/X{n}").exists() and not Path(f"/tmp/.X{n}-lock").exists():
-            return n
-    raise RuntimeError("no free X display number")
-
-
 @pytest.fixture(scope="session")
 def display():
     _need("xdotool")
@@ -44,19 +39,11 @@ def display():
         yield os.environ["DISPLAY"]
         return
     _need("Xvfb")
-    n = _free_display()
-    proc = subprocess.Popen(["Xvfb", f":{n}", "-screen", "0", "1280x800x24", "-nolisten", "tcp"],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    sock = Path(f"/tmp/.X11-unix/X{n}")
-    t0 = time.monotonic()
-    while not sock.exists():
-        if proc.poll() is not None:
-            pytest.fail(f"Xvfb :{n} exited: {proc.stderr.read().decode(errors='replace')}", pytrace=False)
-        if time.monotonic() - t0 > 20:
-            proc.kill()
-            pytest.fail(f"Xvfb :{n} did not start within 20 s", pytrace=False)
-        time.sleep(0.05)
-    yield f":{n}"
+    try:
+        proc, name = start_xvfb()
+    except RuntimeError as exc:
+        pytest.fail(str(exc), pytrace=False)
+    yield name
     proc.terminate()
     try:
         proc.wait(5)
