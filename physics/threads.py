@@ -30,6 +30,8 @@ from numba import types
 from numba.core import config
 from numba.extending import overload
 
+from ._jit import kernel
+
 #: below this many bodies, manifold blocks (of colouring.LANES) or slots per thread, a loop
 #: runs on one thread: starting a parallel region costs about a microsecond, a block's solve
 #: about 0.1 us
@@ -90,6 +92,13 @@ def available() -> int:
 def usable(n: int) -> int:
     """The threads a step asked to use ``n`` runs on in this process."""
     return 1 if FORKED[0] else n
+
+
+@kernel(forceinline=True)
+def share(n, t, nthr):
+    """Thread ``t``'s run ``lo..hi-1`` of ``n`` items split between ``nthr`` threads: runs of
+    floor(n / nthr) or one more, in order, which together cover 0..n-1 once."""
+    return n * t // nthr, n * (t + 1) // nthr
 
 
 def threads_of(split, c):

@@ -16,7 +16,7 @@ from numba import prange
 
 from .._jit import kernel
 from ..store import DYNAMIC, STATIC
-from ..threads import MIN_BODIES
+from ..threads import MIN_BODIES, share
 from .rotation_cap import MAX_ROTATION, cap_about_pivot
 
 VX, VY, W, IM, II, DPX, DPY, DCOS, DSIN = range(9)
@@ -70,7 +70,8 @@ def integrate_row_velocities(B, n, SB, gx, gy, h, nthr):
 @kernel(parallel=True)
 def _velocities_split(B, n, SB, gx, gy, h, nthr):
     for t in prange(nthr):
-        _velocities(B, n * t // nthr, n * (t + 1) // nthr, SB, gx, gy, h)
+        lo, hi = share(n, t, nthr)
+        _velocities(B, lo, hi, SB, gx, gy, h)
 
 
 @kernel
@@ -96,7 +97,8 @@ def integrate_row_positions(B, n, SB, h, PV, npv, nthr):
 @kernel(parallel=True)
 def _positions_split(B, n, SB, h, PV, npv, nthr):
     for t in prange(nthr):
-        _positions(B, n * t // nthr, n * (t + 1) // nthr, SB, h, PV, npv)
+        lo, hi = share(n, t, nthr)
+        _positions(B, lo, hi, SB, h, PV, npv)
 
 
 @kernel

@@ -25,7 +25,7 @@ import numpy as np
 from numba import prange
 
 from .._jit import kernel, kernel_noalias
-from ..threads import MIN_BLOCKS
+from ..threads import MIN_BLOCKS, share
 from .body_rows import (DCOS as _DC, DPX as _DX, DPY as _DY, DSIN as _DS, II as _II, IM as _IM, VX as _VX,
                         VY as _VY, W as _W)
 from .colouring import COUNT, FLAGS, IN_TURN, LANES, OVERFLOW, RUNS
@@ -313,7 +313,8 @@ def _blocks_split(kind, b0, b1, nthr, W_, WV, GA, GB, S, inv_h, push, fp):
     moving body (a fixed one every lane leaves as it was), so any split gives the same numbers."""
     nb = b1 - b0
     for t in prange(nthr):
-        _blocks(kind, b0 + nb * t // nthr, b0 + nb * (t + 1) // nthr, np.int64(L), W_, WV, GA, GB, S, inv_h, push,
+        lo, hi = share(nb, t, nthr)
+        _blocks(kind, b0 + lo, b0 + hi, np.int64(L), W_, WV, GA, GB, S, inv_h, push,
                 fp, None)
 
 

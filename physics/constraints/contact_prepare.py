@@ -22,7 +22,7 @@ import math
 from numba import prange
 
 from .._jit import kernel, kernel_noalias
-from ..threads import MIN_SLOTS
+from ..threads import MIN_SLOTS, share
 from .body_rows import NB
 from .colouring import LANES
 from .contact_soft import DEEP, manifold_state, point_terms, prepared_block
@@ -61,7 +61,8 @@ def _prepare_split(ctx, par, B, C, order, slots, W, T, GA, GB, nthr):
     one-element arrays: numba hands no record to a parallel loop)."""
     nb = slots // L
     for t in prange(nthr):
-        _prepare(ctx[0], par[0], B, C, order, nb * t // nthr, nb * (t + 1) // nthr, W, T, GA, GB)
+        lo, hi = share(nb, t, nthr)
+        _prepare(ctx[0], par[0], B, C, order, lo, hi, W, T, GA, GB)
 
 
 @kernel

@@ -6,7 +6,7 @@ import math
 from numba import prange
 
 from .._jit import kernel
-from ..threads import MIN_BODIES
+from ..threads import MIN_BODIES, share
 from .norm import length
 from ..store.bodies import STATIC
 from ..store.fixtures import CHAIN_SEGMENT, CIRCLE
@@ -124,7 +124,8 @@ def _split(B, F, V, nf, dt, spec, full, nthr):
 @kernel(parallel=True)
 def _boxes_split(B, F, V, nf, dt, spec, full, nthr):
     for t in prange(nthr):
-        _boxes(B, F, V, nf * t // nthr, nf * (t + 1) // nthr, dt, spec, full)
+        lo, hi = share(nf, t, nthr)
+        _boxes(B, F, V, lo, hi, dt, spec, full)
 
 
 @kernel

@@ -22,7 +22,7 @@ import numpy as np
 from numba import prange
 
 from ..._jit import kernel
-from ...threads import MIN_BODIES
+from ...threads import MIN_BODIES, share
 from ...store import STATIC
 from ..argsort import argsort_into
 from .filter import can_pair, overlap, push
@@ -243,7 +243,7 @@ def _sweep_split(B, nb, axis, b0, bstart, ent, nxt, tmp, nthr):
     cut[0] = 0
     b = 0
     for t in range(1, nthr):
-        while b < nb and bstart[b] < bstart[nb] * t // nthr:
+        while b < nb and bstart[b] < share(bstart[nb], t, nthr)[0]:
             b += 1
         cut[t] = b
     cut[nthr] = nb

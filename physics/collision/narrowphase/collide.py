@@ -14,7 +14,7 @@ from numba import prange
 
 from ..._jit import kernel
 from ...store.flat import bodies_view, contacts_view, fixtures_view, verts_view
-from ...threads import MIN_PAIRS
+from ...threads import MIN_PAIRS, share
 from .carry import move_row
 from .kernel import _order_into, _rows, manifold_scratch, pair_keys
 
@@ -58,8 +58,7 @@ def _rows_split(ctx, B, F, V, pairs, order, keys, C, P, n_prev, full, nthr):
     ends = np.empty(nthr, np.int64)
     for t in prange(nthr):
         c = ctx[0]
-        lo = n * t // nthr
-        hi = n * (t + 1) // nthr
+        lo, hi = share(n, t, nthr)
         # the previous step's rows are sorted by key: the run's first is found by bisection
         ptr = np.searchsorted(P.key[:n_prev], keys[order[lo]]) if hi > lo else 0
         sc_a, sc_b, sw, si, lam, poly, out_p, out_s, out_f = manifold_scratch()
@@ -70,7 +69,7 @@ def _rows_split(ctx, B, F, V, pairs, order, keys, C, P, n_prev, full, nthr):
             return -1
     row = ends[0]
     for t in range(1, nthr):
-        for r in range(n * t // nthr, ends[t]):
+        for r in range(share(n, t, nthr)[0], ends[t]):
             move_row(C, row, r)
             row += 1
     return row
