@@ -108,6 +108,8 @@ class FixturesMixin:
     def _new_fixtures(self, body, shapes, density, e, mu_s, mu_d) -> list:
         """Fixture rows of one material for ``shapes`` at once (what ``_new_fixture`` makes for
         each, with the default filter and no name: add_body's 100,000 chain segments)."""
+        if len(shapes) == 1:  # most bodies: the row element by element, no lists or slices
+            return [self._new_fixture(body, shapes[0], density, e, mu_s, mu_d)]
         ids, rows = self._store.fixtures.add_many(len(shapes))
         F = self._store.fixtures.view
         r = slice(rows.start, rows.stop)

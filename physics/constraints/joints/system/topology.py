@@ -187,7 +187,8 @@ def build(J, nj: int, kinds: np.ndarray, jcap: int):
 def _incidences(order, moving):
     """(body, joint, side) of every moving end in elimination order, grouped by body in the order
     bodies are first met (stable within a body): the order the contributions are listed in."""
-    inc = np.array([(c, j, side) for j in order for c, side in moving[j]], np.int64).reshape(-1, 3)
+    # one flat list of ints: numpy reads it faster than a list of tuples
+    inc = np.array([x for j in order for c, side in moving[j] for x in (c, j, side)], np.int64).reshape(-1, 3)
     uniq, first, inv = np.unique(inc[:, 0], return_index=True, return_inverse=True)
     rank = np.empty(len(uniq), np.int64)
     rank[np.argsort(first)] = np.arange(len(uniq))
