@@ -176,7 +176,7 @@ def restore(world, snap: Snapshot) -> None:
     j = st.joints
     j.span, j.span_step, broken, reported = snap.joint_meta
     j.broken_last_step, j._reported = list(broken), set(reported)
-    j.version += 1  # the solvers rebuild their joint rows and system from the restored table
+    j.changed()  # the solvers rebuild their joint rows and system from the restored table
     for fid, shape in snap.shapes.items():
         world._fixture_handles[fid]._shape = shape
     p = world._pipeline

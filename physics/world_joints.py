@@ -169,7 +169,7 @@ class JointsMixin:
         if joint.body_b is not None:
             self._touched(joint.body_b._s)
         if structural:
-            self._joints.version += 1
+            self._joints.edited(joint._s)
         self._pipeline.invalidate()
 
     def _set_joint_anchor(self, joint: Joint, side: str, p) -> None:
@@ -199,7 +199,7 @@ class JointsMixin:
         s = joint._s
         self._joints.view.flags[s] |= BROKEN
         self._joints._reported.add(joint.id)
-        self._joints.version += 1
+        self._joints.edited(s)
         self._pipeline.invalidate()
 
     # -- removal and lookup ----------------------------------------------------------

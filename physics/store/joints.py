@@ -79,6 +79,9 @@ JOINT_FIELDS = {
 Joints = view_class("Joints", JOINT_FIELDS, "joints")
 
 
+LOW_NONE = 1 << 62  # ``JointTable.low`` when no row was edited alone
+
+
 class JointTable(Table):
     """The joint rows, with what their impulses mean and a topology version.
 
@@ -86,7 +89,10 @@ class JointTable(Table):
     impulses stand for and the step that may use them unscaled (see :meth:`adopt`).
     ``version`` is bumped on every change that alters which rows exist or which
     bodies they join (add, remove, break, a parameter that adds or drops a row), so
-    the solvers rebuild their row structures only then.
+    the solvers rebuild their row structures only then.  ``base`` is the version of the
+    last such change other than adding or editing one joint (:meth:`changed`), and ``low``
+    the lowest row edited alone (:meth:`edited`) since its reader last set it to ``LOW_NONE``:
+    while ``base`` stands, the rows below ``low`` are as they were, and new joints come after.
     """
 
     def __init__(self, cap: int = 16):
@@ -94,6 +100,8 @@ class JointTable(Table):
         self.span = 0.0
         self.span_step = -1
         self.version = 0
+        self.base = 0
+        self.low = LOW_NONE
         self.broken_last_step: list[int] = []  # ids of the joints that broke in the last step
         self._reported: set[int] = set()
 
@@ -107,8 +115,18 @@ class JointTable(Table):
 
     def remove(self, oid):
         out = super().remove(oid)
-        self.version += 1
+        self.changed()
         return out
+
+    def changed(self) -> None:
+        """A change of the rows other than an added or edited joint (see the class doc)."""
+        self.version += 1
+        self.base = self.version
+
+    def edited(self, slot: int) -> None:
+        """Row ``slot`` changed which rows it has or which bodies it joins."""
+        self.version += 1
+        self.low = min(self.low, slot)
 
     def adopt(self, span: float, step: int) -> None:
         """Make the accumulated impulses mean impulse over ``span`` seconds for ``step``
@@ -139,7 +157,7 @@ class JointTable(Table):
         ids = [int(i) for i in v.id[:n][(v.flags[:n] & BROKEN) != 0]]
         self.broken_last_step = [i for i in ids if i not in self._reported]
         self._reported.update(self.broken_last_step)
-        self.version += 1
+        self.changed()
 
     def remap_removed_body(self, removed: int, moved_from: int) -> None:
         """Renumber the body that moved into slot ``removed`` (its joints are gone already)."""
@@ -147,4 +165,4 @@ class JointTable(Table):
         v = self.view
         v.a[:n][v.a[:n] == moved_from] = removed
         v.b[:n][v.b[:n] == moved_from] = removed
-        self.version += 1
+        self.changed()

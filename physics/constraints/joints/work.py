@@ -13,12 +13,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...store.joints import BROKEN, COLLIDE, ROWS
+from ...store.joints import BROKEN, COLLIDE, LOW_NONE, ROWS
 from ...store.table import allocate
 from ...store.table_view import view_class
 from ..body_rows import NB
 from .kinds import kinds_changed
 from .layout import NF, NG
+from .system.extend import extend, new_structures_only
 from .system.topology import build, empty_system
 
 #: per joint (the table's rows), then per body (arrays of their own: one row per body)
@@ -44,6 +45,7 @@ class JointWork:
         self.S = empty_system(16)
         self.exclude = np.zeros(0, np.int64)
         self._key = None
+        self._base = None  # the joint table's ``base`` and joint count at the last rebuild
         self._kinds = np.full(32, -2, np.int64)  # the joined bodies' kinds at the last rebuild
 
     def update(self, store):
@@ -52,23 +54,42 @@ class JointWork:
         n = store.bodies.n
         jcap, bcap = len(self.W.on), len(self.W.Q0)
         if nj > jcap or n + 1 > bcap:
+            seq = self.W.seq
             self.W = _scratch(max(nj, 2 * jcap) if nj > jcap else jcap,
                               max(n + 1, 2 * bcap) if n + 1 > bcap else bcap)
+            self.W.seq[: len(seq)] = seq  # the only column kept from step to step
             self._key = None
         if len(self._kinds) < 2 * nj:
-            self._kinds = np.full(4 * nj, -2, np.int64)
-        moved = kinds_changed(*store.joints.arrays.flat, *store.bodies.arrays.flat, nj, self._kinds)
+            kinds, self._kinds = self._kinds, np.full(4 * nj, -2, np.int64)
+            self._kinds[: len(kinds)] = kinds
+        flat = (*store.joints.arrays.flat, *store.bodies.arrays.flat)
+        nj0 = self._base[1] if self._base else 0
+        moved = kinds_changed(*flat, min(nj, nj0), self._kinds)  # of the joints the system has
+        if nj > nj0:  # the added joints' bodies, for the next time (they are a change of key)
+            kinds_changed(*flat, nj, self._kinds)
         key = (store.joints.version, nj)
         if moved or key != self._key:
-            self._rebuild(store, nj)
+            self._rebuild(store, nj, grown=not moved and self._base is not None)
             self._key = key
         return self.W, self.S
 
-    def _rebuild(self, store, nj):
+    def _rebuild(self, store, nj, grown):
+        """The system and the exclusions again; ``grown``: only joints may have been added since
+        the last time, whose system is then placed after the one there is (system/extend.py)."""
         J = store.joints.view
-        B = store.bodies.view
-        self.S, seq = build(J, nj, B.kind[: store.bodies.n], len(self.W.on))
-        self.W.seq[:] = seq[: len(self.W.seq)]
+        kinds = store.bodies.view.kind[: store.bodies.n]
+        jcap = len(self.W.on)
+        nj0 = self._base[1] if self._base else 0
+        T = store.joints
+        if (grown and self._base[0] == T.base and T.low >= nj0 and nj0 < nj
+                and new_structures_only(J, nj0, nj, kinds)):
+            self.S, seq = extend(self.S, J, nj0, nj, kinds, jcap)
+            self.W.seq[nj0:nj] = seq[nj0:nj]
+        else:
+            self.S, seq = build(J, nj, kinds, jcap)
+            self.W.seq[:] = seq[: len(self.W.seq)]
+        self._base = (T.base, nj)
+        T.low = LOW_NONE
         keep = (J.b[:nj] >= 0) & ((J.flags[:nj] & (COLLIDE | BROKEN)) == 0)
         a = J.a[:nj][keep].astype(np.int64)
         b = J.b[:nj][keep].astype(np.int64)

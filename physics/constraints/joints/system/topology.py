@@ -36,6 +36,8 @@ JointSystem = segments_class("JointSystem", {
     "Ax": (FLOAT, 0), "contrib": (INT, 8), "Parent": (INT, 0), "Lnz": (INT, 0), "Lp": (INT, 0), "Li": (INT, 0),
     "Lx": (FLOAT, 0), "invD": (FLOAT, 0), "Y": (FLOAT, 0), "Pattern": (INT, 0), "Flag": (INT, 0), "x": (FLOAT, 0),
     "skip": (INT, 0), "gam": (FLOAT, 0)}, "joint_system")
+#: the fields that describe the system's structure (the rest is the passes' scratch)
+STRUCTURE = ("jrow", "row_j", "row_r", "Ai", "Ap", "contrib", "Parent", "Lnz", "Flag", "Lp")
 
 
 def _system(nrows, nnz, ncontrib, nnzl, jcap):
@@ -52,20 +54,20 @@ def empty_system(jcap: int) -> JointSystem:
     return _system(0, 0, 0, 0, jcap)
 
 
-def _moving_bodies(J, nj, kinds, m):
-    """Per joint with equality rows, the slots of its dynamic bodies (and on which side).  Over
-    Python lists: indexing numpy arrays one element at a time cost ~10 us a joint."""
-    a, b, mm = J.a[:nj].tolist(), J.b[:nj].tolist(), m[:nj].tolist()
+def _moving_bodies(J, nj, kinds, m, lo=0):
+    """Per joint lo..nj-1 with equality rows, the slots of its dynamic bodies (and on which
+    side).  Over Python lists: indexing numpy arrays one element at a time cost ~10 us a joint."""
+    a, b, mm = J.a[lo:nj].tolist(), J.b[lo:nj].tolist(), m[lo:nj].tolist()
     dyn = (np.asarray(kinds) == DYNAMIC).tolist()
     out = {}
-    for j in range(nj):
-        if mm[j] == 0:
+    for i in range(nj - lo):
+        if mm[i] == 0:
             continue
-        ends = [(a[j], 1)] if dyn[a[j]] else []
-        if b[j] >= 0 and dyn[b[j]]:
-            ends.append((b[j], -1))
+        ends = [(a[i], 1)] if dyn[a[i]] else []
+        if b[i] >= 0 and dyn[b[i]]:
+            ends.append((b[i], -1))
         if ends:
-            out[j] = ends
+            out[lo + i] = ends
     return out
 
 
@@ -162,15 +164,15 @@ def _elimination(comp, moving):
     return None if local is None else [comp[i] for i in local]
 
 
-def build(J, nj: int, kinds: np.ndarray, jcap: int):
-    """(JointSystem, seq): the global system for the joints, and which joints stay out of it
-    (SEQUENTIAL, BLOCK)."""
+def build(J, nj: int, kinds: np.ndarray, jcap: int, lo: int = 0):
+    """(JointSystem, seq): the global system for joints lo..nj-1, and which of them stay out of
+    it (SEQUENTIAL, BLOCK; ``seq`` has a place for every joint, those before lo 0)."""
     m = np.zeros(max(nj, 1), np.int64)
     if nj:
         equality_counts(J, nj, m)
     seq = np.zeros(jcap, np.int8)
-    moving = _moving_bodies(J, nj, kinds, m)
-    rows, order = [], []
+    moving = _moving_bodies(J, nj, kinds, m, lo)
+    order = []
     for comp in _components(moving):
         if len(comp) == 1 and LONE_AS_BLOCK[0]:
             seq[comp] = BLOCK
@@ -251,6 +253,6 @@ def _numbering(J, order, m, moving, jcap):
     ldl.symbolic(nrows, sys.Ap, sys.Ai, sys.Parent, sys.Lnz, sys.Flag, sys.Lp)
     nnzl = int(sys.Lp[nrows])
     out = _system(nrows, len(keys), len(rows), nnzl, jcap)  # the same, with room for L's entries
-    for name in ("jrow", "row_j", "row_r", "Ai", "Ap", "contrib", "Parent", "Lnz", "Flag", "Lp"):
+    for name in STRUCTURE:
         getattr(out, name)[...] = getattr(sys, name)
     return out
