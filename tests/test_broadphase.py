@@ -16,6 +16,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from physics.collision import broadphase as bp
+from physics.collision.broadphase.sweep import FEW_AWAKE
 from physics.store import BODY_FIELDS, DYNAMIC, KINEMATIC, STATIC, Bodies, allocate
 
 METHODS = [m for m in bp.METHODS]
@@ -90,6 +91,9 @@ def scenes(draw):
     boxes = _boxes_from(c + far, h)
     kind = rng.choice([DYNAMIC, DYNAMIC, STATIC, KINEMATIC], n)
     awake = rng.choice([0, 1, 1], n)
+    if draw(st.booleans()):  # mostly asleep: around sweep.FEW_AWAKE boxes awake, or fewer
+        awake[:] = 0
+        awake[rng.choice(n, min(n, int(rng.integers(0, 2 * FEW_AWAKE))), replace=False)] = 1
     return boxes, kind, awake
 
 
@@ -111,6 +115,26 @@ def test_coherent_calls_match_after_motion(scene, step, seed):
     check_all(B, n)
     B.aabb[:n] = B.aabb[rng.permutation(n)] if n else B.aabb[:n]  # slots reshuffled
     check_all(B, n)
+
+
+@pytest.mark.parametrize("n_awake", [0, 1, 3, FEW_AWAKE, FEW_AWAKE + 1, 40])
+def test_a_sleeping_wall_and_a_few_awake_boxes(n_awake):
+    """A wall of 60 x 40 touching boxes asleep on a static floor and ``n_awake`` boxes woken in
+    it (pairs among themselves and with sleepers): the few-awake test and the sweep report the
+    reference's pairs, also on calls one after another as boxes wake (the kept order)."""
+    rng = np.random.default_rng(n_awake)
+    gx, gy = np.meshgrid(np.arange(60) * 0.5, np.arange(40) * 0.5)  # binary fractions: edges meet exactly
+    c = np.c_[gx.ravel(), gy.ravel()]
+    boxes = _boxes_from(np.r_[c, [[15.0, -1.0]]], np.r_[np.full((len(c), 2), 0.25), [[20.0, 0.75]]])
+    n = len(boxes)
+    kind = np.full(n, DYNAMIC)
+    kind[-1] = STATIC
+    awake = np.zeros(n, np.int64)
+    for k in (0, n_awake // 2, n_awake):
+        awake[rng.choice(n - 1, k, replace=False)] = 1
+        B, n = bodies(boxes, kind, awake)
+        want = check_all(B, n, 8)
+        assert len(want) >= 2 * k  # every awake box touches its neighbours
 
 
 def test_dense_pile_grows_the_buffer():
