@@ -43,8 +43,6 @@ def load() -> str:
     return f"load {os.getloadavg()[0]:.2f} on {os.cpu_count()} cores"
 
 
-
-
 def cpu_seconds(pid: int) -> tuple[float, float]:
     """(CPU seconds of process ``pid``, of its live children) from /proc (Linux; 0 elsewhere).
     On a loaded machine wall times stretch with the load; the CPU seconds of the sandbox (and

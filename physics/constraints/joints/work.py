@@ -69,19 +69,19 @@ class JointWork:
             kinds_changed(*flat, nj, self._kinds)
         key = (store.joints.version, nj)
         if moved or key != self._key:
-            self._rebuild(store, nj, grown=not moved and self._base is not None)
+            self._rebuild(store, nj, nj0 if not moved and self._base else None)
             self._key = key
         return self.W, self.S
 
-    def _rebuild(self, store, nj, grown):
-        """The system and the exclusions again; ``grown``: only joints may have been added since
-        the last time, whose system is then placed after the one there is (system/extend.py)."""
+    def _rebuild(self, store, nj, nj0):
+        """The system and the exclusions again; ``nj0`` (None: build it all): the joints the
+        system has, after which only joints may have been added: their system is then placed
+        after the one there is (system/extend.py)."""
         J = store.joints.view
         kinds = store.bodies.view.kind[: store.bodies.n]
         jcap = len(self.W.on)
-        nj0 = self._base[1] if self._base else 0
         T = store.joints
-        if (grown and self._base[0] == T.base and T.low >= nj0 and nj0 < nj
+        if (nj0 is not None and self._base[0] == T.base and T.low >= nj0 and nj0 < nj
                 and new_structures_only(J, nj0, nj, kinds)):
             self.S, seq = extend(self.S, J, nj0, nj, kinds, jcap)
             self.W.seq[nj0:nj] = seq[nj0:nj]
