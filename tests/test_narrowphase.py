@@ -19,6 +19,7 @@ from physics.collision.narrowphase import collide
 from physics.geometry.shapes import Polygon
 from physics.store import BODY_FIELDS, CIRCLE, POLYGON, STATIC, Bodies, FixtureTable, Table, VertexPool
 from physics.store.fixtures import ALL_BITS
+from physics.store.slot_list import ALL
 
 DT, SPEC = 1 / 60, 0.02
 
@@ -61,7 +62,8 @@ class State:
 
     def collide(self, pairs, method="sat"):
         B, F, V = self.bodies.view, self.fixtures.view, self.verts.view
-        update_geometry(B, F, V, self.bodies.n, self.fixtures.n, DT, SPEC, True, None)
+        update_geometry(B, F, V, self.bodies.n, self.fixtures.n, DT, SPEC, True, None, ALL,
+                        self.fixtures.n)
         pairs = np.array(pairs, dtype=np.int32).reshape(-1, 2)
         ctx = StepContext()
         ctx.set("dt", DT)

@@ -16,6 +16,7 @@ from numba import prange
 
 from .._jit import kernel
 from ..store import DYNAMIC, STATIC
+from ..store.slot_list import at
 from ..threads import MIN_BODIES, share
 from .rotation_cap import MAX_ROTATION, cap_about_pivot
 
@@ -24,59 +25,75 @@ NB = 9
 SMALL_ROTATION = 0.05  # below this (rad per sub-step) sin/cos of the increment by series
 
 
+@kernel(forceinline=True)
+def _gather(B, i, SB):
+    SB[i, VX] = B.v[i, 0]
+    SB[i, VY] = B.v[i, 1]
+    SB[i, W] = B.w[i]
+    SB[i, IM] = B.inv_m[i]
+    SB[i, II] = B.inv_i[i]
+    SB[i, DPX] = 0.0
+    SB[i, DPY] = 0.0
+    SB[i, DCOS] = 1.0
+    SB[i, DSIN] = 0.0
+
+
 @kernel
-def gather_bodies(B, n, SB):
+def gather_all(B, n, SB):
     """SB[:n] from the body table; no displacement yet."""
     for i in range(n):
-        SB[i, VX] = B.v[i, 0]
-        SB[i, VY] = B.v[i, 1]
-        SB[i, W] = B.w[i]
-        SB[i, IM] = B.inv_m[i]
-        SB[i, II] = B.inv_i[i]
-        SB[i, DPX] = 0.0
-        SB[i, DPY] = 0.0
-        SB[i, DCOS] = 1.0
-        SB[i, DSIN] = 0.0
+        _gather(B, i, SB)
 
 
 @kernel
-def store_velocities(B, n, SB):
-    for i in range(n):
+def gather_bodies(B, idx, m, SB):
+    """SB's rows of the ``m`` bodies listed in ``idx`` (store/slot_list.py), as ``gather_all``."""
+    for k in range(m):
+        _gather(B, at(idx, k), SB)
+
+
+@kernel
+def store_velocities(B, idx, m, SB):
+    for k in range(m):
+        i = at(idx, k)
         B.v[i, 0] = SB[i, VX]
         B.v[i, 1] = SB[i, VY]
         B.w[i] = SB[i, W]
 
 
 @kernel
-def load_velocities(B, n, SB):
-    for i in range(n):
+def load_velocities(B, idx, m, SB):
+    for k in range(m):
+        i = at(idx, k)
         SB[i, VX] = B.v[i, 0]
         SB[i, VY] = B.v[i, 1]
         SB[i, W] = B.w[i]
 
 
 @kernel
-def integrate_row_velocities(B, n, SB, gx, gy, h, nthr):
-    """Gravity and user forces on awake dynamic bodies, into the rows' velocities; split between
-    ``nthr`` threads for many bodies (each body on its own: the same numbers for any split; None:
-    the serial build, physics/threads.py)."""
+def integrate_row_velocities(B, idx, m, SB, gx, gy, h, nthr):
+    """Gravity and user forces on the awake dynamic bodies among the ``m`` listed in ``idx``
+    (store/slot_list.py), into the rows' velocities; split between ``nthr`` threads for many
+    bodies (each body on its own: the same numbers for any split; None: the serial build,
+    physics/threads.py)."""
     if nthr is not None:
-        if nthr > 1 and n >= MIN_BODIES * nthr:
-            _velocities_split(B, n, SB, gx, gy, h, nthr)
+        if nthr > 1 and m >= MIN_BODIES * nthr:
+            _velocities_split(B, idx, m, SB, gx, gy, h, nthr)
             return
-    _velocities(B, 0, n, SB, gx, gy, h)
+    _velocities(B, idx, 0, m, SB, gx, gy, h)
 
 
 @kernel(parallel=True)
-def _velocities_split(B, n, SB, gx, gy, h, nthr):
+def _velocities_split(B, idx, m, SB, gx, gy, h, nthr):
     for t in prange(nthr):
-        lo, hi = share(n, t, nthr)
-        _velocities(B, lo, hi, SB, gx, gy, h)
+        lo, hi = share(m, t, nthr)
+        _velocities(B, idx, lo, hi, SB, gx, gy, h)
 
 
 @kernel
-def _velocities(B, i0, i1, SB, gx, gy, h):
-    for i in range(i0, i1):
+def _velocities(B, idx, k0, k1, SB, gx, gy, h):
+    for k in range(k0, k1):
+        i = at(idx, k)
         if B.kind[i] != DYNAMIC or B.awake[i] == 0:
             continue
         SB[i, VX] += h * (gx + B.inv_m[i] * B.f[i, 0])
@@ -85,24 +102,25 @@ def _velocities(B, i0, i1, SB, gx, gy, h):
 
 
 @kernel
-def integrate_row_positions(B, n, SB, h, PV, npv, nthr):
-    """_positions over every body, split between ``nthr`` threads as integrate_row_velocities."""
+def integrate_row_positions(B, idx, m, SB, h, PV, npv, nthr):
+    """_positions over the ``m`` bodies listed in ``idx``, split between ``nthr`` threads as
+    integrate_row_velocities."""
     if nthr is not None:
-        if nthr > 1 and n >= MIN_BODIES * nthr:
-            _positions_split(B, n, SB, h, PV, npv, nthr)
+        if nthr > 1 and m >= MIN_BODIES * nthr:
+            _positions_split(B, idx, m, SB, h, PV, npv, nthr)
             return
-    _positions(B, 0, n, SB, h, PV, npv)
+    _positions(B, idx, 0, m, SB, h, PV, npv)
 
 
 @kernel(parallel=True)
-def _positions_split(B, n, SB, h, PV, npv, nthr):
+def _positions_split(B, idx, m, SB, h, PV, npv, nthr):
     for t in prange(nthr):
-        lo, hi = share(n, t, nthr)
-        _positions(B, lo, hi, SB, h, PV, npv)
+        lo, hi = share(m, t, nthr)
+        _positions(B, idx, lo, hi, SB, h, PV, npv)
 
 
 @kernel
-def _positions(B, i0, i1, SB, h, PV, npv):
+def _positions(B, idx, k0, k1, SB, h, PV, npv):
     """x += h v, q += h w with the rows' velocities (rotation per sub-step capped at
     MAX_ROTATION, about a joint's anchor for the first ``npv`` bodies: joints/pivot.py);
     accumulates the displacement since the step began.
@@ -112,7 +130,8 @@ def _positions(B, i0, i1, SB, h, PV, npv):
     from their series to within rounding (first omitted terms < 1e-15) instead
     of two libm calls per body and sub-step.
     """
-    for i in range(i0, i1):
+    for k in range(k0, k1):
+        i = at(idx, k)
         if B.kind[i] == STATIC or B.awake[i] == 0:
             continue
         w = SB[i, W]

@@ -102,8 +102,9 @@ def colour_contacts(ca, cb, nc, inv_m, inv_i, n, used, colour, order, bstart, fo
     order, so a pass visits only those; at FLAGS ``force``).  Returns the number of slots used
     (a multiple of LANES; ``order`` must hold at least nc * LANES).
     """
-    for i in range(n):
-        used[i] = 0
+    for k in range(nc):  # only the manifolds' bodies are read: a sleeping world costs nothing here
+        used[ca[k]] = 0
+        used[cb[k]] = 0
     count = bstart[COUNT:COUNT + COLOURS]  # (views into the scratch: no allocation per step)
     fill = bstart[COUNT + COLOURS:]
     count[:] = 0

@@ -22,6 +22,7 @@ import numpy as np
 
 from .._jit import kernel
 from ..store.union_find import find_root, union_roots
+from ..store.slot_list import at
 from .body_rows import II, IM, VX, VY, W
 from .contact_soft import JN, PT
 
@@ -32,9 +33,21 @@ TOLERANCE = 1e-9  # relative: rounding of a bounce exactly at its pair cap is no
 def save_velocities(SB, n, V):
     """V[:n] = the rows' (vx, vy, w)."""
     for i in range(n):
-        V[i, 0] = SB[i, VX]
-        V[i, 1] = SB[i, VY]
-        V[i, 2] = SB[i, W]
+        _save(SB, i, V)
+
+
+@kernel
+def save_velocities_of(SB, idx, m, V):
+    """``save_velocities`` of the ``m`` rows listed in ``idx`` (store/slot_list.py)."""
+    for k in range(m):
+        _save(SB, at(idx, k), V)
+
+
+@kernel(forceinline=True)
+def _save(SB, i, V):
+    V[i, 0] = SB[i, VX]
+    V[i, 1] = SB[i, VY]
+    V[i, 2] = SB[i, W]
 
 
 @kernel(forceinline=True)

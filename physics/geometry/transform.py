@@ -10,6 +10,7 @@ from ..threads import MIN_BODIES, share
 from .norm import length
 from ..store.bodies import STATIC
 from ..store.fixtures import CHAIN_SEGMENT, CIRCLE
+from ..store.slot_list import at
 
 
 @kernel(forceinline=True)
@@ -65,6 +66,12 @@ def _kept(B, F, f, i):
     return B.kind[i] == STATIC or (B.awake[i] == 0 and F.awake[f] == 0)
 
 
+@kernel(forceinline=True)
+def _fixture(idx, k, full):
+    """The k-th fixture visited: k itself when ``full`` (every fixture), else the list's."""
+    return k if full else at(idx, k)
+
+
 @kernel
 def _clear_box(B, i):
     B.aabb[i, 0] = math.inf
@@ -74,7 +81,7 @@ def _clear_box(B, i):
 
 
 @kernel(entry=True)
-def update_geometry(B, F, V, n, nf, dt, spec, full, nthr):
+def update_geometry(B, F, V, n, nf, dt, spec, full, nthr, idx, m):
     """Transform the fixtures to world space and refresh the fixtures' and bodies' AABBs.
 
     Each AABB is fattened by m_i = spec/2 + dt (|v_i| + |w_i| r_i) of its body: two boxes
@@ -85,21 +92,27 @@ def update_geometry(B, F, V, n, nf, dt, spec, full, nthr):
 
     Unless ``full`` (after an edit, or a change of dt or of the speculative distance, which
     the caller says), static and sleeping bodies keep their geometry (``_kept``): the same
-    numbers, and a sleeping pile or a long static chain costs nothing here.  The fixtures are
-    transformed on ``nthr`` threads when there are many (each on its own: the same numbers);
-    the bodies' boxes are their union after (``nthr`` None: the serial build, physics/threads.py).
+    numbers, and a sleeping pile or a long static chain costs nothing here.  Then only the
+    ``m`` fixtures listed in ``idx`` are visited (store/slot_list.py: ALL and ``nf``, or a list
+    holding every fixture that is not kept, step/active.py).  The fixtures are transformed on
+    ``nthr`` threads when there are many (each on its own: the same numbers); the bodies' boxes
+    are their union after (``nthr`` None: the serial build, physics/threads.py).
     """
-    if not _split(B, F, V, nf, dt, spec, full, nthr):
-        _boxes(B, F, V, 0, nf, dt, spec, full)
+    if full:
+        m = nf  # every fixture (the list is not read: _fixture)
+    if not _split(B, F, V, idx, m, dt, spec, full, nthr):
+        _boxes(B, F, V, idx, 0, m, dt, spec, full)
     if full:
         for i in range(n):
             _clear_box(B, i)
     else:  # a body's fixtures are all kept or none (they share the flags _kept reads)
-        for f in range(nf):
+        for k in range(m):
+            f = at(idx, k)
             i = F.body[f]
             if not _kept(B, F, f, i):
                 _clear_box(B, i)
-    for f in range(nf):
+    for k in range(m):
+        f = _fixture(idx, k, full)
         i = F.body[f]
         if not full and _kept(B, F, f, i):
             continue
@@ -112,26 +125,28 @@ def update_geometry(B, F, V, n, nf, dt, spec, full, nthr):
 
 
 @kernel
-def _split(B, F, V, nf, dt, spec, full, nthr):
+def _split(B, F, V, idx, m, dt, spec, full, nthr):
     """_boxes split between ``nthr`` threads when there are enough fixtures; whether it did."""
     if nthr is not None:
-        if nthr > 1 and nf >= MIN_BODIES * nthr:
-            _boxes_split(B, F, V, nf, dt, spec, full, nthr)
+        if nthr > 1 and m >= MIN_BODIES * nthr:
+            _boxes_split(B, F, V, idx, m, dt, spec, full, nthr)
             return True
     return False
 
 
 @kernel(parallel=True)
-def _boxes_split(B, F, V, nf, dt, spec, full, nthr):
+def _boxes_split(B, F, V, idx, m, dt, spec, full, nthr):
     for t in prange(nthr):
-        lo, hi = share(nf, t, nthr)
-        _boxes(B, F, V, lo, hi, dt, spec, full)
+        lo, hi = share(m, t, nthr)
+        _boxes(B, F, V, idx, lo, hi, dt, spec, full)
 
 
 @kernel
-def _boxes(B, F, V, f0, f1, dt, spec, full):
-    """Fixtures f0..f1-1 in world space, their fattened boxes into F.aabb (kept ones skipped)."""
-    for f in range(f0, f1):
+def _boxes(B, F, V, idx, k0, k1, dt, spec, full):
+    """The listed fixtures k0..k1-1 (``idx``, store/slot_list.py) in world space, their fattened
+    boxes into F.aabb (kept ones skipped)."""
+    for k in range(k0, k1):
+        f = _fixture(idx, k, full)
         i = F.body[f]
         if not full and _kept(B, F, f, i):
             continue

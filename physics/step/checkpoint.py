@@ -13,13 +13,16 @@ import numpy as np
 
 from .._jit import kernel
 from ..store import DYNAMIC
+from ..store.slot_list import ALL, at
 
 STATE, ENERGY = 0, 1  # why a step is refused: a non-finite state, or a finite state whose energy is not
 
 
 @kernel(entry=True)
-def save_state(B, n, X, Q, Vel, W):
-    for i in range(n):
+def save_state(B, idx, m, X, Q, Vel, W):
+    """The state of the ``m`` bodies listed in ``idx`` (store/slot_list.py) into X, Q, Vel, W."""
+    for k in range(m):
+        i = at(idx, k)
         X[i, 0] = B.x[i, 0]
         X[i, 1] = B.x[i, 1]
         Q[i] = B.q[i]
@@ -29,8 +32,9 @@ def save_state(B, n, X, Q, Vel, W):
 
 
 @kernel(entry=True)
-def restore_state(B, n, X, Q, Vel, W):
-    for i in range(n):
+def restore_state(B, idx, m, X, Q, Vel, W):
+    for k in range(m):
+        i = at(idx, k)
         B.x[i, 0] = X[i, 0]
         B.x[i, 1] = X[i, 1]
         B.q[i] = Q[i]
@@ -68,8 +72,10 @@ def spring_energy(B, S, s):
 
 
 @kernel(entry=True)
-def count_nonfinite(B, n, S, ns, out, why):
-    """Writes the slots whose state is NaN or infinite into ``out``; returns how many.
+def count_nonfinite(B, idx, m, S, ns, out, why):
+    """Writes the slots whose state is NaN or infinite into ``out``; returns how many.  Checks
+    the ``m`` bodies listed in ``idx`` (store/slot_list.py: the step's rows, which are all a step
+    changes) and the ``ns`` springs.
 
     When every state is finite but the kinetic energy (a body's or the total, as
     measures.kinetic_energy sums it) or the springs' elastic energy is not, ``why[0]`` is
@@ -80,7 +86,8 @@ def count_nonfinite(B, n, S, ns, out, why):
     worst = -1
     top = -1.0
     why[0] = STATE
-    for i in range(n):
+    for j in range(m):
+        i = at(idx, j)
         if not finite_state(B, i):
             if k < out.shape[0]:
                 out[k] = i
@@ -110,12 +117,15 @@ def count_nonfinite(B, n, S, ns, out, why):
 
 
 class Checkpoint:
-    """Preallocated copy of (x, q, v, w) for the live bodies."""
+    """Preallocated copy of (x, q, v, w) for the live bodies: all of them (``save``), or only the
+    rows a one-call step listed (step/active.py: the bodies it can change), which ``restore``
+    then puts back after ``listed`` said how many."""
 
     def __init__(self):
         self._alloc(64)
         self.bad = np.zeros(16, dtype=np.int64)
         self.why = np.zeros(1, dtype=np.int64)
+        self.nrows = -1  # -1: the copy holds every body
 
     def _alloc(self, cap):
         self.X = np.zeros((cap, 2))
@@ -123,6 +133,8 @@ class Checkpoint:
         self.V = np.zeros((cap, 2))
         self.W = np.zeros(cap)
         self.cluster = np.zeros((3, cap), dtype=np.int64)  # scratch: the push-out allowance's clusters (push_out.py)
+        self.rows = np.zeros(cap, dtype=np.int64)  # the step's rows (step/active.py)
+        self.mark = np.zeros(cap, dtype=np.int64)  # their dedup stamps
 
     def ensure(self, n):
         if n > len(self.Q):
@@ -130,14 +142,22 @@ class Checkpoint:
 
     def save(self, B, n):
         self.ensure(n)
-        save_state(B, n, self.X, self.Q, self.V, self.W)
+        self.nrows = -1
+        save_state(B, ALL, n, self.X, self.Q, self.V, self.W)
+
+    def listed(self, nrows: int) -> None:
+        """The copy holds only ``rows[:nrows]`` (a one-call step saved those)."""
+        self.nrows = nrows
 
     def restore(self, B, n):
-        restore_state(B, n, self.X, self.Q, self.V, self.W)
+        if self.nrows < 0:
+            restore_state(B, ALL, n, self.X, self.Q, self.V, self.W)
+        else:
+            restore_state(B, self.rows, self.nrows, self.X, self.Q, self.V, self.W)
 
     def nonfinite(self, B, n, S, ns) -> list[int]:
         """The first slots whose state (or energy: ``self.why``) is not finite now."""
-        return self.slots(count_nonfinite(B, n, S, ns, self.bad, self.why))
+        return self.slots(count_nonfinite(B, ALL, n, S, ns, self.bad, self.why))
 
     def slots(self, k: int) -> list[int]:
         """The first non-finite slots found by a count of ``k``."""

@@ -4,8 +4,9 @@ The guard (energy_guard.py) needs, before and after every step, the world's kine
 gravitational and elastic energy, the dynamic mass (its noise floor) and whether anything
 supplies energy from outside (a user force, a moving kinematic body).  As numpy over the body
 table that was ~0.1 ms a step on pyramid20 (issue 17): about 25 array operations, each paying
-its call cost.  These loops run inside begin_step / end_step (frame.py), which already visit
-every body, so the guard costs a few arithmetic operations per body and no extra call.
+its call cost.  These loops run inside begin_step / end_step (frame.py), over the bodies those
+visit (the moving ones in the one-call step, step/active.py, with the sleeping ones' sums kept
+while they sleep), so the guard costs a few arithmetic operations per body and no extra call.
 """
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ from .._jit import kernel
 from ..store import DYNAMIC, KINEMATIC
 from ..store.flat import bodies_view, joints_view
 from ..store.joints import ANGULAR_MOTOR, BROKEN, MOTOR, MOUSE
+from ..store.slot_list import at
 from .checkpoint import spring_energy
 
 #: the slots of the sums array: kinetic, gravitational, elastic energy (J), dynamic mass (kg),
@@ -22,39 +24,72 @@ KE, PE, ELASTIC, MASS, EXTERNAL, PUSH, LOWEST = range(7)
 SUMS = 7
 
 
-@kernel
-def guard_sums(B, S, n, ns, gx, gy, out):
-    """Fill ``out[KE..EXTERNAL]`` from the first ``n`` bodies and ``ns`` springs."""
+@kernel(forceinline=True)
+def _input(B, i):
+    """Body i takes energy from outside: a user force or torque, or it is a moving kinematic
+    body ("!= 0.0" is true for NaN too: a non-finite force is an input, refused later)."""
+    if B.f[i, 0] != 0.0 or B.f[i, 1] != 0.0 or B.tau[i] != 0.0:
+        return True
+    return B.kind[i] == KINEMATIC and (B.v[i, 0] != 0.0 or B.v[i, 1] != 0.0 or B.w[i] != 0.0)
+
+
+@kernel(forceinline=True)
+def _body_sums(B, idx, m, gx, gy):
+    """(KE, PE, MASS, LOWEST, EXTERNAL) of the ``m`` bodies listed in ``idx``."""
     ke = 0.0
     pe = 0.0
     mass = 0.0
     ext = 0.0
     lowest = 0.0
-    for i in range(n):
-        kind = B.kind[i]
-        vx = B.v[i, 0]
-        vy = B.v[i, 1]
-        w = B.w[i]
-        if kind == DYNAMIC:
-            m = B.m[i]
-            ke += 0.5 * (m * (vx * vx + vy * vy) + B.inertia[i] * w * w)
+    for k in range(m):
+        i = at(idx, k)
+        if B.kind[i] == DYNAMIC:
+            vx = B.v[i, 0]
+            vy = B.v[i, 1]
+            w = B.w[i]
+            mi = B.m[i]
+            ke += 0.5 * (mi * (vx * vx + vy * vy) + B.inertia[i] * w * w)
             u = -(B.x[i, 0] * gx + B.x[i, 1] * gy)
-            pe += m * u
+            pe += mi * u
             lowest = u if mass == 0.0 else min(lowest, u)
-            mass += m
-        elif kind == KINEMATIC and (vx != 0.0 or vy != 0.0 or w != 0.0):
+            mass += mi
+        if _input(B, i):
             ext = 1.0
-        # "!= 0.0" is true for NaN too: a non-finite force is an input (and is refused later)
-        if B.f[i, 0] != 0.0 or B.f[i, 1] != 0.0 or B.tau[i] != 0.0:
-            ext = 1.0
+    return ke, pe, mass, lowest, ext
+
+
+@kernel
+def rest_sums(B, idx, m, gx, gy, out):
+    """The sums of the ``m`` bodies listed in ``idx`` (store/slot_list.py) that are at rest
+    (sleeping) into ``out``: the part of ``guard_sums`` that stays the same while they sleep
+    (step/active.py keeps it)."""
+    ke, pe, mass, lowest, ext = _body_sums(B, idx, m, gx, gy)
+    for j in range(SUMS):
+        out[j] = 0.0
+    out[KE] = ke
+    out[PE] = pe
+    out[MASS] = mass
+    out[LOWEST] = lowest
+    out[EXTERNAL] = ext
+
+
+@kernel
+def guard_sums(B, S, idx, m, ns, gx, gy, rest, out):
+    """Fill ``out[KE..EXTERNAL]`` and ``out[LOWEST]`` from the ``m`` bodies listed in ``idx``
+    (store/slot_list.py), the sums ``rest`` of the others (``rest_sums``; zeros when every body
+    is listed) and the ``ns`` springs."""
+    ke, pe, mass, lowest, ext = _body_sums(B, idx, m, gx, gy)
+    if rest[MASS] > 0.0:
+        lowest = rest[LOWEST] if mass == 0.0 else min(lowest, rest[LOWEST])
+        mass += rest[MASS]
     elastic = 0.0
     for s in range(ns):
         elastic += spring_energy(B, S, s)
-    out[KE] = ke
-    out[PE] = pe
+    out[KE] = ke + rest[KE]
+    out[PE] = pe + rest[PE]
     out[ELASTIC] = elastic
     out[MASS] = mass
-    out[EXTERNAL] = ext
+    out[EXTERNAL] = max(ext, rest[EXTERNAL])
     out[LOWEST] = lowest
 
 

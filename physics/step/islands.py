@@ -20,11 +20,18 @@ from .._jit import kernel
 from ..store import DYNAMIC, KINEMATIC
 from ..store.flat import bodies_view, contacts_view, joints_view, springs_view
 from ..store.joints import BROKEN, MOUSE
+from ..store.slot_list import at
 from ..store.union_find import find_root, union_roots
+
+#: ``label``'s slots: the last island label given, and a count of islands woken or put to sleep
+#: (the step's list of moving bodies changes with it: step/active.py)
+LABEL, WOKEN = range(2)
 
 
 @kernel
-def _wake_island(B, n, s):
+def _wake_island(B, n, s, label):
+    """Wake body s and its sleeping island; ``label[WOKEN]`` counts it."""
+    label[WOKEN] += 1
     lab = B.island[s]
     if lab < 0:
         B.awake[s] = 1
@@ -43,7 +50,7 @@ def _moving(B, i):
 
 
 @kernel
-def _wake_touched(B, n, C, nc, S, ns, slop):
+def _wake_touched(B, n, C, nc, S, ns, slop, label):
     """Wake sleeping islands touched by awake dynamic or moving kinematic bodies."""
     for k in range(nc):
         touching = C.depth[k, 0] > -slop or (C.count[k] > 1 and C.depth[k, 1] > -slop)
@@ -56,43 +63,43 @@ def _wake_touched(B, n, C, nc, S, ns, slop):
             o = b if side == 0 else a
             if B.kind[s] == DYNAMIC and B.awake[s] == 0 and B.awake[o] == 1:
                 if B.kind[o] == DYNAMIC or (B.kind[o] == KINEMATIC and _moving(B, o)):
-                    _wake_island(B, n, s)
+                    _wake_island(B, n, s, label)
     for k in range(ns):
         a = S.a[k]
         b = S.b[k]
         if b < 0:
             continue
         if B.awake[a] == 0 and B.awake[b] == 1 and B.kind[a] == DYNAMIC:
-            _wake_island(B, n, a)
+            _wake_island(B, n, a, label)
         elif B.awake[b] == 0 and B.awake[a] == 1 and B.kind[b] == DYNAMIC:
-            _wake_island(B, n, b)
+            _wake_island(B, n, b, label)
 
 
 @kernel
-def _wake_linked(B, n, a, b):
+def _wake_linked(B, n, a, b, label):
     """Wake the sleeping side of a link between an awake and a sleeping dynamic body."""
     if b < 0:
         return
     if B.awake[a] == 0 and B.awake[b] == 1 and B.kind[a] == DYNAMIC:
-        _wake_island(B, n, a)
+        _wake_island(B, n, a, label)
     elif B.awake[b] == 0 and B.awake[a] == 1 and B.kind[b] == DYNAMIC:
-        _wake_island(B, n, b)
+        _wake_island(B, n, b, label)
 
 
 @kernel
-def _joint_links(B, n, JL, parent):
+def _joint_links(B, n, JL, parent, label):
     """Wake across joints, keep driven bodies awake, union the joined dynamic bodies."""
     for k in range(JL.shape[0]):
         a = JL[k, 0]
         b = JL[k, 1]
-        _wake_linked(B, n, a, b)
+        _wake_linked(B, n, a, b, label)
         if JL[k, 2]:
             for s in (a, b):
                 if s >= 0 and B.kind[s] == DYNAMIC:
                     if B.awake[s] == 0:
-                        _wake_island(B, n, s)
+                        _wake_island(B, n, s, label)
                     B.sleep_t[s] = 0.0
-        if b >= 0 and B.kind[a] == DYNAMIC and B.kind[b] == DYNAMIC:
+        if b >= 0 and _both_awake(B, a, b):
             union_roots(parent, a, b)
 
 
@@ -107,29 +114,41 @@ def _restless(B, i, lin_tol, ang_tol):
 
 
 @kernel
-def _wake_pushed(B, n, lin_tol, ang_tol):
+def _wake_pushed(B, n, idx, k0, k1, lin_tol, ang_tol, label):
     """Sleepers are put to sleep at rest, so a velocity now came from an impulse this step
     (e.g. a speculative row, not yet touching, that stopped a body thrown at the sleeper).
     Above the sleep thresholds it wakes the island; below, it is a nudge and is dropped
-    (waking on every nudge would keep a settling pile from ever sleeping island by island)."""
-    for i in range(n):
+    (waking on every nudge would keep a settling pile from ever sleeping island by island).
+    Visits the listed bodies k0..k1-1 in slot order (``idx``, store/slot_list.py): every body,
+    or the step's rows that are not awake (no other sleeper has a velocity)."""
+    for k in range(k0, k1):
+        i = at(idx, k)
         if B.kind[i] != DYNAMIC or B.awake[i] == 1 or not _moving(B, i):
             continue
         if _restless(B, i, lin_tol, ang_tol):
-            _wake_island(B, n, i)
+            _wake_island(B, n, i, label)
         else:
             B.v[i, 0] = 0.0
             B.v[i, 1] = 0.0
             B.w[i] = 0.0
 
 
+@kernel(forceinline=True)
+def _both_awake(B, a, b):
+    """Two awake dynamic bodies: a link the islands join (a link to a sleeper woke it first)."""
+    return B.kind[a] == DYNAMIC and B.kind[b] == DYNAMIC and B.awake[a] == 1 and B.awake[b] == 1
+
+
 @kernel
-def update_islands(ctx, B, C, S, JL, parent, min_t, label):
-    """One sleep update after the solver; returns the number of awake non-static bodies.
+def update_islands(ctx, B, C, S, JL, parent, min_t, label, act, nact, rows, nrows):
+    """One sleep update after the solver; returns the number of awake non-static bodies and of
+    the moving bodies listed in ``act`` after it.
 
     ``JL`` the joint links (see the module doc; no rows without joints); ``parent`` and
-    ``min_t`` are scratch arrays of at least n entries; ``label`` a 1-element counter for
-    fresh island labels.
+    ``min_t`` are scratch arrays of at least n entries; ``label`` the counters of fresh island
+    labels and of islands woken or put to sleep (LABEL, WOKEN).  ``act``: the ``nact`` moving
+    bodies (step/active.py: in slot order; kept up to date here) or ALL and n; ``rows`` the step's
+    ``nrows`` rows (act's first) or ALL and n (store/slot_list.py).
     """
     c = ctx[0]
     n = c.n
@@ -140,9 +159,14 @@ def update_islands(ctx, B, C, S, JL, parent, min_t, label):
     lin_tol = c.sleep_linear
     ang_tol = c.sleep_angular
     time_to_sleep = c.time_to_sleep
-    _wake_touched(B, n, C, nc, S, ns, slop)
-    _wake_pushed(B, n, lin_tol, ang_tol)
-    for i in range(n):
+    listed = act.shape[0] > 0
+    woken = label[WOKEN]
+    _wake_touched(B, n, C, nc, S, ns, slop, label)
+    _wake_pushed(B, n, rows, nact if listed else 0, nrows, lin_tol, ang_tol, label)
+    if listed and label[WOKEN] != woken:
+        nact = moving_slots(B, n, act)
+    for k in range(nact):
+        i = at(act, k)
         parent[i] = i
         if B.kind[i] == DYNAMIC and B.awake[i] == 1:
             if _restless(B, i, lin_tol, ang_tol):
@@ -157,7 +181,7 @@ def update_islands(ctx, B, C, S, JL, parent, min_t, label):
         b = C.b[k]
         ka = B.kind[a]
         kb = B.kind[b]
-        if ka == DYNAMIC and kb == DYNAMIC:
+        if _both_awake(B, a, b):
             union_roots(parent, a, b)
         # resting on a moving kinematic body is not rest
         elif ka == KINEMATIC and _moving(B, a) and kb == DYNAMIC:
@@ -167,44 +191,73 @@ def update_islands(ctx, B, C, S, JL, parent, min_t, label):
     for k in range(ns):
         a = S.a[k]
         b = S.b[k]
-        if b >= 0 and B.kind[a] == DYNAMIC and B.kind[b] == DYNAMIC:
+        if b >= 0 and _both_awake(B, a, b):
             union_roots(parent, a, b)
     if JL.shape[0]:
-        _joint_links(B, n, JL, parent)
-    for i in range(n):
-        min_t[i] = np.inf
-    for i in range(n):
+        _joint_links(B, n, JL, parent, label)
+    return _sleep(B, act, nact, parent, min_t, label, time_to_sleep)
+
+
+@kernel
+def _sleep(B, act, nact, parent, min_t, label, time_to_sleep):
+    """Put to sleep every island whose bodies all rested ``time_to_sleep``; the awake count and
+    the moving bodies left in ``act`` (listed: the sleepers dropped from it)."""
+    for k in range(nact):
+        min_t[at(act, k)] = np.inf
+    for k in range(nact):
+        i = at(act, k)
         if B.kind[i] == DYNAMIC and B.awake[i] == 1:
             r = find_root(parent, i)
             if B.sleep_t[i] < min_t[r]:
                 min_t[r] = B.sleep_t[i]
     awake = 0
-    for i in range(n):
+    kept = 0
+    for k in range(nact):
+        i = at(act, k)
         if B.kind[i] == DYNAMIC and B.awake[i] == 1:
             r = find_root(parent, i)
             if min_t[r] >= time_to_sleep:
                 # the root is the island's smallest slot (see union_roots), so it comes first
                 if i == r:
-                    label[0] += 1
-                    B.island[i] = label[0]
+                    label[LABEL] += 1
+                    B.island[i] = label[LABEL]
+                    label[WOKEN] += 1
                 else:
                     B.island[i] = B.island[r]
                 B.awake[i] = 0
                 B.v[i, 0] = 0.0
                 B.v[i, 1] = 0.0
                 B.w[i] = 0.0
-            else:
-                awake += 1
+                continue
+            awake += 1
         elif B.kind[i] == KINEMATIC and _moving(B, i):
             awake += 1
-    return awake
+        if act.shape[0]:
+            act[kept] = i
+        kept += 1
+    return awake, kept
+
+
+@kernel
+def moving_slots(B, n, act):
+    """The slots of the bodies that can move (dynamic and awake, or kinematic), in slot order,
+    into ``act``; returns how many."""
+    k = 0
+    for i in range(n):
+        kind = B.kind[i]
+        if kind == KINEMATIC or (kind == DYNAMIC and B.awake[i] == 1):
+            act[k] = i
+            k += 1
+    return k
 
 
 @kernel(entry=True, runtime=True)
 def update_islands_flat(ctx, BF, BI, CF, CI, Cpt, SF, SI, JL, parent, min_t, label):
     """``update_islands`` over the body, contact and spring tables' flat arrays (store/flat.py)."""
+    every = np.zeros(0, np.int64)  # store/slot_list.ALL
+    n = ctx[0].n
     return update_islands(ctx, bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI), JL, parent,
-                          min_t, label)
+                          min_t, label, every, n, every, n)[0]
 
 
 class Islands:
@@ -213,7 +266,7 @@ class Islands:
     def __init__(self):
         self.parent = np.zeros(64, dtype=np.int64)
         self.min_t = np.zeros(64)
-        self.label = np.zeros(1, dtype=np.int64)
+        self.label = np.zeros(2, dtype=np.int64)  # LABEL, WOKEN
         self._no_links = np.zeros((0, 3), dtype=np.int64)
         self._links = np.zeros((16, 3), dtype=np.int64)
 

@@ -25,6 +25,7 @@ from .. import threads
 from ..store.table import GENERATION
 from . import soft_driver as drv
 from .energy_bound import E_OUT, LIMIT_OUT
+from .active import Active
 from .pack import new_pack, pack_signature
 from .soft_driver import (
     D_CADOPT,
@@ -52,6 +53,7 @@ from .soft_driver import (
     S_STEP,
     S_SWEEP,
     S_GEOM,
+    S_NROWS,
     soft_world_step,
 )
 
@@ -97,6 +99,7 @@ class OneCall:
         self._sort = (np.zeros(0, np.int64), np.zeros(0, np.int64))  # the pairs' keys and order
         self._scratch = None  # the narrow phase's manifold scratch
         self._V0 = None  # soft_step's start-velocity scratch
+        self.active = Active()  # the step's lists of moving bodies and fixtures (active.py)
         self.sweep = None  # the sweep broad phase's scratch in the pack (empty: brute force)
         self.wide = None  # the colouring's scratch in the pack
         self._dt = None  # the step length and the mode's settings version the slots were set for
@@ -178,7 +181,7 @@ class OneCall:
             tr.keys, tr._keys2, tr.begin, tr._begin2, tr._absent, tr._absent2,
             isl.parent, isl.min_t, isl.label, links, mode.R, mode.SB, self._v0(len(mode.SB)),
             JF, JI, JW, JS, kinds, s.springs.arrays.flat[0] if s.springs.n else None,
-            1 if c.full else None, self.sweep, wide, 1 if splits(world) else None)
+            1 if c.full else None, self.sweep, wide, 1 if splits(world) else None, self._lists(s, ck))
         self._waiting = None
         if not (_ON_DEMAND[0] or now):
             sig = pack_signature(values)
@@ -198,6 +201,11 @@ class OneCall:
         return (np.full(2, -1, np.int64), np.arange(nf, dtype=i4), np.empty(nf), np.empty(nf, i4),
                 np.empty(nf, i4), np.empty(nf + 2, i4), np.empty(6 * nf, i4), np.empty((npairs, 2), i4),
                 np.empty(nf + 1, i4))
+
+    def _lists(self, s, ck) -> tuple:
+        """The pack's ``active`` field: the step's lists (active.py) and the checkpoint's rows."""
+        self.active.ensure(s.bodies.n, s.fixtures.n)
+        return (*self.active.fields(), ck.rows, ck.mark)
 
     def _v0(self, rows: int) -> np.ndarray:
         """soft_step's start-velocity and pivot scratch, ``rows`` long."""
@@ -311,6 +319,8 @@ class OneCall:
 
     def _refused(self, world, pl, code: int) -> None:
         world._store.contacts.swap(int(self.S[S_NC]))  # the driver swapped the tables: so do the handles
+        pl._checkpoint.listed(int(self.S[S_NROWS]))  # the step saved only its rows
+        self.S[S_GEOM] = 1  # the state goes back: the lists and the sleepers' sums anew
         if code == drv.NONFINITE:
             pl._fail(world, pl._checkpoint.slots(int(self.S[S_KBAD])))
         g = pl._guard

@@ -28,6 +28,7 @@ from ..constraints.joints.work import joint_work
 from ..errors import SimulationError
 from ..geometry.transform import update_geometry
 from ..store import DYNAMIC, KIND_NAMES, STATIC
+from ..store.slot_list import ALL
 from ..threads import FORKED
 from .checkpoint import Checkpoint
 from .energy_guard import EnergyGuard
@@ -134,7 +135,7 @@ class Pipeline:
     def refresh_geometry(self, world, dt: float = 0.0) -> None:
         s = world._store
         update_geometry(s.bodies.view, s.fixtures.view, s.verts.view, s.bodies.n, s.fixtures.n, dt,
-                        world.speculative_distance, True, None)
+                        world.speculative_distance, True, None, ALL, s.fixtures.n)
 
     def collide(self, world, dt: float, geometry: bool = True) -> None:
         s = world._store

@@ -23,6 +23,7 @@ from collections import Counter
 import numpy as np
 
 from .._jit import kernel
+from ..store.slot_list import at
 
 #: rows of the int scratch ``cluster`` (3 x bodies): union-find parents, dynamic bodies per
 #: cluster root, and whether the cluster touches a body that does not move (1)
@@ -60,11 +61,13 @@ def _root(cluster, i):
 
 
 @kernel
-def _clusters(B, n, Ca, Cb, npts, depth, nc, cluster):
-    """Union-find of the ``n`` bodies over the overlapping manifolds between two moving bodies;
+def _clusters(B, idx, m, Ca, Cb, npts, depth, nc, cluster):
+    """Union-find of the bodies over the overlapping manifolds between two moving bodies;
     then per root the moving bodies in its set and whether an overlapping manifold ties the set
-    to a body that does not move."""
-    for i in range(n):
+    to a body that does not move.  Visits the ``m`` bodies listed in ``idx`` (store/slot_list.py),
+    which must hold every body of the manifolds: a body in none is its own set, never read."""
+    for k in range(m):
+        i = at(idx, k)
         cluster[PARENT, i] = i
         cluster[BODIES, i] = 0
         cluster[FIXED, i] = 0
@@ -73,7 +76,8 @@ def _clusters(B, n, Ca, Cb, npts, depth, nc, cluster):
         if overlap(npts, depth, k) > 0.0 and B.inv_m[a] > 0.0 and B.inv_m[b] > 0.0:
             ra, rb = _root(cluster, a), _root(cluster, b)
             cluster[PARENT, max(ra, rb)] = min(ra, rb)
-    for i in range(n):
+    for k in range(m):
+        i = at(idx, k)
         if B.inv_m[i] > 0.0:
             cluster[BODIES, _root(cluster, i)] += 1
     for k in range(nc):
@@ -83,10 +87,11 @@ def _clusters(B, n, Ca, Cb, npts, depth, nc, cluster):
 
 
 @kernel
-def push_sum(B, n, Ca, Cb, npts, depth, nc, speed, g, cluster):
+def push_sum(B, idx, m, Ca, Cb, npts, depth, nc, speed, g, cluster):
     """The push-out allowance of the ``nc`` manifolds (J; see the module doc): ``speed`` the
-    mode's push-out speed cap (m/s), ``g`` = |gravity|, ``cluster`` int scratch (3, >= n)."""
-    _clusters(B, n, Ca, Cb, npts, depth, nc, cluster)
+    mode's push-out speed cap (m/s), ``g`` = |gravity|, ``cluster`` int scratch (3, >= n); the
+    bodies ``_clusters`` visits listed in ``idx``."""
+    _clusters(B, idx, m, Ca, Cb, npts, depth, nc, cluster)
     total = 0.0
     for k in range(nc):
         d = overlap(npts, depth, k)

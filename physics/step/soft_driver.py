@@ -32,20 +32,24 @@ from .clock import cycles
 from .energy_bound import ACTIVE, guard_begin, guard_excess
 from .energy_sums import motor_power_of
 from .frame import begin_step, end_step
-from .islands import joint_links, update_islands
+from .active import REST_SLOTS, partition, step_rows
+from .checkpoint import save_state
+from .islands import WOKEN, joint_links, update_islands
 from .pack import call_with_fields
 
 #: P.S slots: counts (bodies, fixtures, springs, joints), the step number, contact rows, which
 #: contact table and which touching set is current, the last touching count, the broad phase's
 #: pairs and their limit, sleeping on, awake bodies, joints broken, the size a grow code asks
-#: for, the touching merge's counts, the non-finite count, the sweep's choice, and whether the
-#: next step computes every fixture's geometry (set by Python after an edit or a settings change)
+#: for, the touching merge's counts, the non-finite count, the sweep's choice, whether the
+#: next step computes every fixture's geometry (set by Python after an edit or a settings change),
+#: and the lengths of the step's lists (active.py: moving bodies, fixtures, rows) and its stamp
 (S_N, S_NF, S_NS, S_NJ, S_STEP, S_NC, S_CPAR, S_EPAR, S_NTOUCH, S_NPAIRS, S_LIMIT, S_SLEEP, S_NAWAKE,
- S_BROKEN, S_NEED, S_NT, S_NB, S_NA, S_KBAD, S_SWEEP, S_GEOM) = range(21)
-S_SLOTS = 21
-#: P.D slots: the guard's growth r, |g|, the contact and joint impulses' adopt factors
-D_GROWTH, D_GMAG, D_CADOPT, D_JADOPT = range(4)
-D_SLOTS = 4
+ S_BROKEN, S_NEED, S_NT, S_NB, S_NA, S_KBAD, S_SWEEP, S_GEOM, S_NACT, S_NACTF, S_NROWS, S_STAMP) = range(25)
+S_SLOTS = 25
+#: P.D slots: the guard's growth r, |g|, the contact and joint impulses' adopt factors, then the
+#: sleeping bodies' guard sums (active.py: REST_SLOTS of them)
+D_GROWTH, D_GMAG, D_CADOPT, D_JADOPT, D_REST = range(5)
+D_SLOTS = D_REST + REST_SLOTS
 #: return codes
 OK, GROW_PAIRS, TOO_MANY_PAIRS, GROW_ROWS, NEED_FULL, JOINT_KINDS, GROW_BLOCKS, NONFINITE, GAINED = range(9)
 #: P.T: cycle stamps at the start and after each of the profile's six stages
@@ -139,7 +143,8 @@ def soft_world_step(P):
 @kernel
 def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, CAF, CAI, CApt, CBF, CBI, CBpt,
            pairs, exclude, pkeys, porder, mscratch, X, Q, V, W, bad, why, cluster, start, end, EK0, EK1, EB0, EB1,
-           EA0, EA1, parent, min_t, label, links, R, SB, V0, JF, JI, JW, JS, kinds, SS, full, sweep, wide, split):
+           EA0, EA1, parent, min_t, label, links, R, SB, V0, JF, JI, JW, JS, kinds, SS, full, sweep, wide, split,
+           active):
     """The step over the pack's arrays (pack.FIELDS, in order): the stages of the module doc."""
     T[0] = cycles()
     c = ctx[0]
@@ -154,7 +159,12 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     Vt = make_table("verts", (VF,))
     Sp = make_table("springs", (SF, SI))
     J = optional_joints(JF, JI)
-    begin_step(ctx, B, F, Vt, nf, X, Q, V, W, Sp, start, S[S_GEOM] != 0, nthr)
+    act, actf, sleepers, rows, mark = active
+    rest = D[D_REST:D_REST + REST_SLOTS]
+    if S[S_GEOM] != 0:  # an edit: the moving bodies listed anew
+        S[S_NACT], S[S_NACTF] = partition(B, F, c.n, nf, c.gx, c.gy, act, actf, sleepers, rest)
+    nact = S[S_NACT]
+    begin_step(ctx, B, F, Vt, nf, X, Q, V, W, Sp, start, S[S_GEOM] != 0, nthr, act, nact, actf, S[S_NACTF], rest)
     S[S_GEOM] = 0  # static and sleeping bodies keep their geometry until Python says otherwise
     p_start, dragged = _motors(J, B, nj)
     guard_begin(G, start, D[D_GROWTH], p_start, dragged)
@@ -193,23 +203,30 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     S[S_CPAR] = 1 - S[S_CPAR]
     S[S_NC] = nc
     c.nc = nc
+    S[S_STAMP] += 1
+    nrows = S[S_NROWS] = step_rows(C.a, C.b, nc, J, nj, Sp, c.ns, act, nact, rows, mark, S[S_STAMP])
+    save_state(B, rows[nact:], nrows - nact, X, Q, V, W)  # the rows beyond act (begin_step saved those)
     T[3] = cycles()
     _scale_impulses(C, nc, D[D_CADOPT])
     _scale_joint_impulses(J, nj, D[D_JADOPT])
     # the soft step over the colouring _colour left in ``wide``: its blocks end at bstart[COLOURS]
     _, order, bstart, _, W, WV, GA, GB = wide
     S[S_BROKEN] = soft_step_wide(ctx, par, B, C, optional_springs(SS, SI), R, SB, J, JW, JS, V0, order, bstart,
-                                 bstart[COLOURS] * LANES, W, WV, GA, GB, nthr)
+                                 bstart[COLOURS] * LANES, W, WV, GA, GB, nthr, act, nact, rows, nrows)
     T[4] = cycles()
     if S[S_SLEEP]:
-        S[S_NAWAKE] = update_islands(ctx, B, C, Sp, links[:_links(J, nj, links)], parent, min_t, label)
+        changes = label[WOKEN]
+        S[S_NAWAKE], S[S_NACT] = update_islands(ctx, B, C, Sp, links[:_links(J, nj, links)], parent, min_t, label,
+                                                act, nact, rows, nrows)
+        if label[WOKEN] != changes:  # islands woke or fell asleep: the lists anew
+            S[S_NACT], S[S_NACTF] = partition(B, F, c.n, nf, c.gx, c.gy, act, actf, sleepers, rest)
     T[5] = cycles()
     if S[S_EPAR] == 0:
         keys, out, begin, absent = EK0, EK1, EB1, EA1
     else:
         keys, out, begin, absent = EK1, EK0, EB0, EA0
     k, nt, nb, na = end_step(ctx, B, Sp, bad, why, C.a, C.b, nc, cluster, end, C.key, C.count, C.depth, C.jn,
-                             keys, S[S_NTOUCH], out, begin, absent)
+                             keys, S[S_NTOUCH], out, begin, absent, act, S[S_NACT], rows, nrows, rest)
     return _finish(S, T, D, G, c, J, B, nj, end, k, nt, nb, na)
 
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..body_rows import II, IM, VX, VY, W, gather_bodies
+from ..body_rows import II, IM, VX, VY, W, gather_all
 from .dispatch import solve_joints, warm_start_joints
 from .jit import row_kernel
 from .prepare import prepare_joints, zero_joint_impulses
@@ -26,7 +26,7 @@ from .sync import displacement_from_table, rows_from_table, save_start, table_fr
 def begin_table_joints(c, B, J, JW, JS, h, warm_starting):
     """Rows, frames and the warm start for a pass span ``h`` (see the module doc)."""
     n = c.n
-    gather_bodies(B, n, JW.SB)
+    gather_all(B, n, JW.SB)
     save_start(B, n, JW.X0, JW.Q0)
     if not warm_starting:
         zero_joint_impulses(J, c.nj)

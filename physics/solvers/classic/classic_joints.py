@@ -9,7 +9,7 @@ without joints, and these compile to nothing.
 from __future__ import annotations
 
 from ..._jit import kernel
-from ...constraints.body_rows import gather_bodies
+from ...constraints.body_rows import gather_all
 from ...constraints.joints.dispatch import store_joints
 from ...constraints.joints.position import correct_joint_positions
 from ...constraints.joints.prepare import prepare_joints
@@ -19,7 +19,7 @@ from ...constraints.joints.sync import save_start
 @kernel
 def begin_classic_joints(c, p, B, J, JW):
     """Rows and frames for sub-steps of dt / p.substeps; step-start positions saved."""
-    gather_bodies(B, c.n, JW.SB)
+    gather_all(B, c.n, JW.SB)
     save_start(B, c.n, JW.X0, JW.Q0)
     prepare_joints(c, B, J, JW, c.dt / p.substeps, 0.0, 1.0, 0.0)
 

@@ -58,7 +58,7 @@ from ...constraints.joints.pivot import save_pivots
 from ...constraints.rotation_cap import PIVOT_COLUMNS
 from ...constraints.joints.sync import save_start
 from ...constraints.point import zero_impulses
-from ...constraints.restitution_cluster import save_velocities
+from ...constraints.restitution_cluster import save_velocities_of
 from ...constraints.springs.substep import solve_springs
 from ..joint_settings import GLOBAL
 
@@ -85,17 +85,22 @@ def soft_step_coloured(ctx, par, B, C, S, R, SB, J, JW, JS, used, order, bstart,
     if slots < 0:
         return slots
     V0 = np.empty((c.n, PIVOT_COLUMNS))
-    return soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB, None)
+    every = np.zeros(0, np.int64)  # store/slot_list.ALL: every body
+    return soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB, None,
+                          every, c.n, every, c.n)
 
 
 @kernel
-def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB, nthr):
+def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots, W, WV, GA, GB, nthr, act, nact,
+                   rows, nrows):
     """soft_step_coloured's step once the manifolds are coloured into ``slots`` slots (``order``,
     ``bstart``) and the blocks hold them: the one-call driver colours before the contact tables
     swap, so that a grow of the blocks can still call again.  ``V0``: scratch of at least n rows
     of PIVOT_COLUMNS (the sub-step's start velocities, which cap the bounces, and the pivots:
     rotation_cap.py); ``nthr`` the thread count for the split loops, None in the serial build
-    (physics/threads.py)."""
+    (physics/threads.py).  The bodies it visits are listed (store/slot_list.py): the ``nact`` in
+    ``act`` move, the ``nrows`` in ``rows`` (act's and every body a contact, joint or spring
+    reaches: step/active.py) have rows in ``SB``."""
     c = ctx[0]
     p = par[0]
     n = c.n
@@ -108,7 +113,7 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
         if C.e[k] != 0.0:
             bouncy = True
             break
-    gather_bodies(B, n, SB)
+    gather_bodies(B, rows, nrows, SB)
     if bouncy:  # restitution works on the rows (contact_wide.py): prepare them, then the blocks
         prepare_contacts(c, p, B, C, R)
         pack(C, R, order, slots, p.block_solver, W, GA, GB)
@@ -127,9 +132,9 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
     warm, solve, relax = np.int64(WARM), np.int64(SOLVE), np.int64(RELAX)
     fresh = np.bool_(False)  # the joints' rows are those of the bodies' current positions (dispatch.refresh_rows)
     for _ in range(p.substeps):
-        integrate_row_velocities(B, n, SB, c.gx, c.gy, h, nthr)
+        integrate_row_velocities(B, act, nact, SB, c.gx, c.gy, h, nthr)
         if bouncy:
-            save_velocities(SB, n, V0)
+            save_velocities_of(SB, rows, nrows, V0)
         coloured_pass(warm, bstart, W, WV, GA, GB, SB, p.inv_h, p.push_out_speed, p.friction_pass, nthr)
         if J is not None:
             warm_start_joints(c, B, J, JW, JS, not fresh)
@@ -138,10 +143,10 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
             if J is not None:
                 solve_joints(c, B, J, JW, JS, np.bool_(True), p.inv_h, eq_global)
         if S is not None and c.ns > 0:  # last before the move (module doc; S None: no springs)
-            store_velocities(B, n, SB)
+            store_velocities(B, rows, nrows, SB)
             solve_springs(B, S, c.ns, h)
-            load_velocities(B, n, SB)
-        integrate_row_positions(B, n, SB, h, V0, np.int64(n if J is not None else 0), nthr)
+            load_velocities(B, rows, nrows, SB)
+        integrate_row_positions(B, act, nact, SB, h, V0, np.int64(n if J is not None else 0), nthr)
         fresh = np.bool_(False)
         if project:
             project_joints(c, B, J, JW, JS)
@@ -163,5 +168,5 @@ def soft_step_wide(ctx, par, B, C, S, R, SB, J, JW, JS, V0, order, bstart, slots
         store_wide(C, W, order, slots)
     if J is not None:
         broken = store_joints(c, J, JW, p.inv_h)
-    store_velocities(B, n, SB)
+    store_velocities(B, rows, nrows, SB)
     return broken
