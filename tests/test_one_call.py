@@ -49,6 +49,20 @@ def _swept_pile():
     return w
 
 
+def _sleeping_wall():
+    """A wall created asleep (Box2D's smash sample, small) and a ball thrown at it: the driver's
+    lists of moving bodies (step/active.py), its index of the resting boxes and the wall's waking
+    box by box (broadphase/resting_index.py) against the pipeline, which loops over every body."""
+    w = physics.World(gravity=(0, -10))
+    w.broadphase = "sweep"
+    w.add_body(physics.Polygon.box(40, 1), position=(0, -0.5), kind="static")
+    for i in range(10):
+        for j in range(8):
+            w.add_body(physics.Polygon.box(0.5, 0.5), position=(2 + 0.5 * i, 0.25 + 0.5 * j), awake=False)
+    w.add_body(physics.Circle(0.4), position=(-3, 1.5), velocity=(12, 0), density=20)
+    return w
+
+
 SCENES = {
     "box": lambda: scene_from_dict(small("box")),
     "stack5": lambda: scene_from_dict(small("stack5")),
@@ -58,6 +72,7 @@ SCENES = {
     "pile40": _pile,
     "rounded": _rounded,
     "pile40_sweep": _swept_pile,
+    "sleeping_wall": _sleeping_wall,
     # 132 fixtures: the automatic broad phase is the sweep; springs, circles and polygons
     "default": lambda: physics.load_scene(ROOT / "scenes" / "default.json"),
 }

@@ -122,6 +122,9 @@ class Active:
             self.act = np.zeros(cap, np.int64)
             self.sleepers = np.zeros(cap, np.int64)
             self.actf = np.zeros(capf, np.int64)
+            # the resting boxes' index (broadphase/resting_index.py): its scratch, keys and fixtures
+            self.index = (np.zeros(capf), np.zeros(capf, np.int64), np.zeros(capf, np.int64), np.zeros(capf),
+                          np.zeros(capf, np.int64))
 
     def fields(self) -> tuple:
         return self.act, self.actf, self.sleepers

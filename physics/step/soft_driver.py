@@ -20,6 +20,7 @@ from ..collision.broadphase.brute import brute_pairs
 from ..collision.broadphase.order import sort_pairs as sort_slot_pairs
 from ..collision.broadphase.sweep import sweep_emit
 from ..collision.broadphase.fixture_filter import filter_reachable
+from ..collision.broadphase.resting_index import build_index, few_awake_of, indexed_pairs
 from ..collision.narrowphase.collide import collide_with
 from ..collision.narrowphase.kernel import sort_pairs
 from ..constraints.joints.kinds import kinds_changed_in
@@ -42,13 +43,15 @@ from .pack import call_with_fields
 #: pairs and their limit, sleeping on, awake bodies, joints broken, the size a grow code asks
 #: for, the touching merge's counts, the non-finite count, the sweep's choice, whether the
 #: next step computes every fixture's geometry (set by Python after an edit or a settings change),
-#: and the lengths of the step's lists (active.py: moving bodies, fixtures, rows) and its stamp
+#: the lengths of the step's lists (active.py: moving bodies, fixtures, rows) and its stamp, how
+#: many times the lists were made, the count the resting boxes' index was built at and its length
 (S_N, S_NF, S_NS, S_NJ, S_STEP, S_NC, S_CPAR, S_EPAR, S_NTOUCH, S_NPAIRS, S_LIMIT, S_SLEEP, S_NAWAKE,
- S_BROKEN, S_NEED, S_NT, S_NB, S_NA, S_KBAD, S_SWEEP, S_GEOM, S_NACT, S_NACTF, S_NROWS, S_STAMP) = range(25)
-S_SLOTS = 25
-#: P.D slots: the guard's growth r, |g|, the contact and joint impulses' adopt factors, then the
-#: sleeping bodies' guard sums (active.py: REST_SLOTS of them)
-D_GROWTH, D_GMAG, D_CADOPT, D_JADOPT, D_REST = range(5)
+ S_BROKEN, S_NEED, S_NT, S_NB, S_NA, S_KBAD, S_SWEEP, S_GEOM, S_NACT, S_NACTF, S_NROWS, S_STAMP, S_PARTS, S_INDEXED,
+ S_NREST) = range(28)
+S_SLOTS = 28
+#: P.D slots: the guard's growth r, |g|, the contact and joint impulses' adopt factors, the widest
+#: resting box (the index's), then the sleeping bodies' guard sums (active.py: REST_SLOTS of them)
+D_GROWTH, D_GMAG, D_CADOPT, D_JADOPT, D_WIDE, D_REST = range(6)
 D_SLOTS = D_REST + REST_SLOTS
 #: return codes
 OK, GROW_PAIRS, TOO_MANY_PAIRS, GROW_ROWS, NEED_FULL, JOINT_KINDS, GROW_BLOCKS, NONFINITE, GAINED = range(9)
@@ -65,14 +68,22 @@ def _motors(J, B, nj):
 
 
 @kernel
-def _broad_phase(F, nf, pairs, swept, sweep, nthr):
+def _broad_phase(F, nf, pairs, swept, sweep, nthr, active, S, D):
     """The count of the fixtures' overlapping pairs: brute force, sorted into ``pairs``, or
     (``swept``) the sweep with the world's scratch, unsorted into its ``tmp``, which is as long
-    as ``pairs``, so a count that fits one fits both.  A runtime choice, not an optional
-    argument: both worlds then step with one compiled driver."""
+    as ``pairs``, so a count that fits one fits both; with few boxes awake, their queries of
+    the resting boxes' index instead (resting_index.py: the same pairs), the index rebuilt when
+    the lists changed since.  A runtime choice, not an optional argument: both worlds then step
+    with one compiled driver."""
     if not swept:
         return brute_pairs(F, nf, pairs)
     state, order, key, b0, b1, bstart, ent, tmp, head = sweep
+    actf, skey, iorder, itmp, rkey, rslot = active[1], active[5], active[6], active[7], active[8], active[9]
+    if few_awake_of(F, actf, S[S_NACTF]):
+        if S[S_INDEXED] != S[S_PARTS]:
+            S[S_NREST], D[D_WIDE] = build_index(F, nf, skey, iorder, itmp, rkey, rslot)
+            S[S_INDEXED] = S[S_PARTS]
+        return indexed_pairs(F, actf, S[S_NACTF], rkey, rslot, S[S_NREST], D[D_WIDE], tmp)
     return sweep_emit(F, nf, state, order, key, b0, b1, bstart, ent, tmp, nthr)
 
 
@@ -159,10 +170,11 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     Vt = make_table("verts", (VF,))
     Sp = make_table("springs", (SF, SI))
     J = optional_joints(JF, JI)
-    act, actf, sleepers, rows, mark = active
+    act, actf, sleepers, rows, mark = active[0], active[1], active[2], active[3], active[4]
     rest = D[D_REST:D_REST + REST_SLOTS]
     if S[S_GEOM] != 0:  # an edit: the moving bodies listed anew
         S[S_NACT], S[S_NACTF] = partition(B, F, c.n, nf, c.gx, c.gy, act, actf, sleepers, rest)
+        S[S_PARTS] += 1
     nact = S[S_NACT]
     begin_step(ctx, B, F, Vt, nf, X, Q, V, W, Sp, start, S[S_GEOM] != 0, nthr, act, nact, actf, S[S_NACTF], rest)
     S[S_GEOM] = 0  # static and sleeping bodies keep their geometry until Python says otherwise
@@ -171,7 +183,7 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     if not _joints_ready(J, B, nj, kinds):
         return JOINT_KINDS
     T[1] = cycles()
-    npairs = _broad_phase(F, nf, pairs, S[S_SWEEP] != 0, sweep, nthr)
+    npairs = _broad_phase(F, nf, pairs, S[S_SWEEP] != 0, sweep, nthr, active, S, D)
     S[S_NEED] = npairs
     if npairs > S[S_LIMIT]:
         return TOO_MANY_PAIRS
@@ -220,6 +232,7 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
                                                 act, nact, rows, nrows)
         if label[WOKEN] != changes:  # islands woke or fell asleep: the lists anew
             S[S_NACT], S[S_NACTF] = partition(B, F, c.n, nf, c.gx, c.gy, act, actf, sleepers, rest)
+            S[S_PARTS] += 1
     T[5] = cycles()
     if S[S_EPAR] == 0:
         keys, out, begin, absent = EK0, EK1, EB1, EA1
