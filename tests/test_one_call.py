@@ -181,6 +181,29 @@ def test_sleeping_and_waking_match_the_pipeline():
     assert a._pipeline.n_awake == b._pipeline.n_awake
 
 
+def test_an_island_put_to_sleep_in_the_driver_wakes_whole():
+    """A stack falls asleep as one island while a ball rolls towards it; the ball's contact wakes
+    the island along the cycle the driver's sleep update linked (step/active.py), not a scan:
+    every step the same bits as the pipeline's scan, the stack asleep before and awake after."""
+    def make():
+        w = physics.World(gravity=(0, -10))
+        w.add_body(physics.Polygon.box(60, 1), position=(0, -0.5), kind="static")
+        for i in range(4):
+            w.add_body(physics.Polygon.box(1, 1), position=(0, 0.5 + 1.0 * i))
+        w.add_body(physics.Circle(0.3), position=(-18, 0.3), velocity=(8, 0), density=5)
+        return w
+
+    seen = {}
+
+    def edit(w, k):
+        if k in (120, 299):
+            seen[k] = [b.awake for b in w.bodies[1:5]]
+    a = _run(make, True, 300, edit)
+    b = _run(make, False, 300, edit)
+    _same(a, b)
+    assert seen[120] == [False] * 4 and seen[299] == [True] * 4
+
+
 def test_driver_profile_splits_the_step_into_its_stages():
     w = _run(SCENES["stack5"], True, 10)
     p = w.profile

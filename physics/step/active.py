@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._jit import kernel
+from ..collision.argsort import argsort_into
 from ..store import DYNAMIC, STATIC
 from .energy_sums import rest_sums
 from .islands import moving_slots
@@ -32,8 +33,8 @@ REST_SLOTS = 7
 def partition(B, F, n, nf, gx, gy, act, actf, sleepers, rest):
     """``act`` (moving_slots), ``actf`` (the fixtures of bodies that are not static and are awake
     or were when their geometry was last computed: geometry.transform._kept) and ``rest``, the
-    guard's sums of the sleeping dynamic bodies (their slots listed in ``sleepers``, scratch).
-    Returns the lengths of ``act`` and ``actf``."""
+    guard's sums of the sleeping dynamic bodies (their slots listed in ``sleepers``).  Returns the
+    lengths of ``act``, ``actf`` and ``sleepers``."""
     nact = moving_slots(B, n, act)
     k = 0
     for i in range(n):
@@ -47,7 +48,26 @@ def partition(B, F, n, nf, gx, gy, act, actf, sleepers, rest):
         if B.kind[i] != STATIC and (B.awake[i] == 1 or F.awake[f] == 1):
             actf[nactf] = f
             nactf += 1
-    return nact, nactf
+    return nact, nactf, k
+
+
+@kernel
+def link_islands(B, sleepers, k, ring, key, order, tmp):
+    """``ring``: for each of the ``k`` sleeping bodies listed in ``sleepers`` the next member of
+    its island, a cycle per island, so that waking one visits its island only (islands.py; the
+    step keeps the cycles of the islands it puts to sleep).  Built after an edit, which may have
+    made or changed islands anywhere: the sleepers sorted by label (``key``, ``order``, ``tmp``
+    scratch of k or more)."""
+    for j in range(k):
+        key[j] = B.island[sleepers[j]]
+    argsort_into(key, k, order, tmp)
+    start = 0
+    for j in range(k):
+        i = sleepers[order[j]]
+        last = j + 1 == k or key[order[j + 1]] != key[order[j]]
+        ring[i] = sleepers[order[start]] if last else sleepers[order[j + 1]]
+        if last:
+            start = j + 1
 
 
 @kernel(forceinline=True)
@@ -125,6 +145,8 @@ class Active:
             # the resting boxes' index (broadphase/resting_index.py): its scratch, keys and fixtures
             self.index = (np.zeros(capf), np.zeros(capf, np.int64), np.zeros(capf, np.int64), np.zeros(capf),
                           np.zeros(capf, np.int64))
+            # the islands' member cycles (link_islands) and their sort's scratch
+            self.rings = (np.zeros(cap, np.int64), np.zeros(cap), np.zeros(cap, np.int64), np.zeros(cap, np.int64))
 
     def fields(self) -> tuple:
         return self.act, self.actf, self.sleepers

@@ -56,6 +56,13 @@ def touch_update(key, count, depth, jn, n, slop, prev, nprev, out, begin, absent
     return nt, nb, na
 
 
+def _grown(a: np.ndarray, keep: int, cap: int) -> np.ndarray:
+    """A zeroed array of ``cap`` entries holding ``a[:keep]``."""
+    out = np.zeros(cap, a.dtype)
+    out[:keep] = a[:keep]
+    return out
+
+
 class ContactTracker:
     """The touching keys (sorted) and the last step's begins (row numbers) and ends (keys)."""
 
@@ -75,12 +82,16 @@ class ContactTracker:
     def scratch(self, nc: int):
         """The merge's arguments for the ``nc`` rows (frame.end_step runs it, while the step's
         last kernel has the rows at hand): last step's keys, their count, and the spare outputs."""
-        if nc > len(self._keys2):
-            self._keys2 = np.zeros(2 * nc, np.int64)
-        if nc > len(self._begin2):
-            self._begin2 = np.zeros(2 * nc, np.int64)
-        if self.n > len(self._absent2):
-            self._absent2 = np.zeros(2 * self.n, np.int64)
+        # the arrays and their spares grow together: they swap roles at every accepted step, so a
+        # spare left short would be short again one step later (and the one-call step would stop
+        # to grow it)
+        if nc > min(len(self._keys2), len(self.keys)):
+            self.keys, self._keys2 = _grown(self.keys, self.n, 2 * nc), np.zeros(2 * nc, np.int64)
+        if nc > min(len(self._begin2), len(self.begin)):
+            self.begin, self._begin2 = _grown(self.begin, self.nb, 2 * nc), np.zeros(2 * nc, np.int64)
+        if self.n > min(len(self._absent2), len(self._absent)):
+            # (``ends`` may be a view of the old array, which it keeps alive: nothing to copy)
+            self._absent, self._absent2 = np.zeros(2 * self.n, np.int64), np.zeros(2 * self.n, np.int64)
         return self.keys, self.n, self._keys2, self._begin2, self._absent2
 
     def take(self, world, nt: int, nb: int, na: int) -> None:

@@ -29,14 +29,26 @@ LABEL, WOKEN = range(2)
 
 
 @kernel
-def _wake_island(B, n, s, label):
-    """Wake body s and its sleeping island; ``label[WOKEN]`` counts it."""
+def _wake_island(B, n, s, label, ring):
+    """Wake body s and its sleeping island; ``label[WOKEN]`` counts it.  The island's members are
+    found along ``ring`` (step/active.py: each sleeper's next member, a cycle per island) or,
+    without rings (an empty array: the pipeline's step), by a scan of every body."""
     label[WOKEN] += 1
     lab = B.island[s]
     if lab < 0:
         B.awake[s] = 1
         B.sleep_t[s] = 0.0
         return
+    if ring.shape[0]:
+        i = s
+        while True:
+            nxt = ring[i]
+            B.awake[i] = 1
+            B.sleep_t[i] = 0.0
+            B.island[i] = -1
+            i = nxt
+            if i == s:
+                return
     for i in range(n):
         if B.island[i] == lab:
             B.awake[i] = 1
@@ -50,7 +62,7 @@ def _moving(B, i):
 
 
 @kernel
-def _wake_touched(B, n, C, nc, S, ns, slop, label):
+def _wake_touched(B, n, C, nc, S, ns, slop, label, ring):
     """Wake sleeping islands touched by awake dynamic or moving kinematic bodies."""
     for k in range(nc):
         touching = C.depth[k, 0] > -slop or (C.count[k] > 1 and C.depth[k, 1] > -slop)
@@ -63,41 +75,41 @@ def _wake_touched(B, n, C, nc, S, ns, slop, label):
             o = b if side == 0 else a
             if B.kind[s] == DYNAMIC and B.awake[s] == 0 and B.awake[o] == 1:
                 if B.kind[o] == DYNAMIC or (B.kind[o] == KINEMATIC and _moving(B, o)):
-                    _wake_island(B, n, s, label)
+                    _wake_island(B, n, s, label, ring)
     for k in range(ns):
         a = S.a[k]
         b = S.b[k]
         if b < 0:
             continue
         if B.awake[a] == 0 and B.awake[b] == 1 and B.kind[a] == DYNAMIC:
-            _wake_island(B, n, a, label)
+            _wake_island(B, n, a, label, ring)
         elif B.awake[b] == 0 and B.awake[a] == 1 and B.kind[b] == DYNAMIC:
-            _wake_island(B, n, b, label)
+            _wake_island(B, n, b, label, ring)
 
 
 @kernel
-def _wake_linked(B, n, a, b, label):
+def _wake_linked(B, n, a, b, label, ring):
     """Wake the sleeping side of a link between an awake and a sleeping dynamic body."""
     if b < 0:
         return
     if B.awake[a] == 0 and B.awake[b] == 1 and B.kind[a] == DYNAMIC:
-        _wake_island(B, n, a, label)
+        _wake_island(B, n, a, label, ring)
     elif B.awake[b] == 0 and B.awake[a] == 1 and B.kind[b] == DYNAMIC:
-        _wake_island(B, n, b, label)
+        _wake_island(B, n, b, label, ring)
 
 
 @kernel
-def _joint_links(B, n, JL, parent, label):
+def _joint_links(B, n, JL, parent, label, ring):
     """Wake across joints, keep driven bodies awake, union the joined dynamic bodies."""
     for k in range(JL.shape[0]):
         a = JL[k, 0]
         b = JL[k, 1]
-        _wake_linked(B, n, a, b, label)
+        _wake_linked(B, n, a, b, label, ring)
         if JL[k, 2]:
             for s in (a, b):
                 if s >= 0 and B.kind[s] == DYNAMIC:
                     if B.awake[s] == 0:
-                        _wake_island(B, n, s, label)
+                        _wake_island(B, n, s, label, ring)
                     B.sleep_t[s] = 0.0
         if b >= 0 and _both_awake(B, a, b):
             union_roots(parent, a, b)
@@ -114,7 +126,7 @@ def _restless(B, i, lin_tol, ang_tol):
 
 
 @kernel
-def _wake_pushed(B, n, idx, k0, k1, lin_tol, ang_tol, label):
+def _wake_pushed(B, n, idx, k0, k1, lin_tol, ang_tol, label, ring):
     """Sleepers are put to sleep at rest, so a velocity now came from an impulse this step
     (e.g. a speculative row, not yet touching, that stopped a body thrown at the sleeper).
     Above the sleep thresholds it wakes the island; below, it is a nudge and is dropped
@@ -126,7 +138,7 @@ def _wake_pushed(B, n, idx, k0, k1, lin_tol, ang_tol, label):
         if B.kind[i] != DYNAMIC or B.awake[i] == 1 or not _moving(B, i):
             continue
         if _restless(B, i, lin_tol, ang_tol):
-            _wake_island(B, n, i, label)
+            _wake_island(B, n, i, label, ring)
         else:
             B.v[i, 0] = 0.0
             B.v[i, 1] = 0.0
@@ -140,15 +152,17 @@ def _both_awake(B, a, b):
 
 
 @kernel
-def update_islands(ctx, B, C, S, JL, parent, min_t, label, act, nact, rows, nrows):
+def update_islands(ctx, B, C, S, JL, parent, min_t, label, ring, act, nact, rows, nrows):
     """One sleep update after the solver; returns the number of awake non-static bodies and of
     the moving bodies listed in ``act`` after it.
 
     ``JL`` the joint links (see the module doc; no rows without joints); ``parent`` and
     ``min_t`` are scratch arrays of at least n entries; ``label`` the counters of fresh island
-    labels and of islands woken or put to sleep (LABEL, WOKEN).  ``act``: the ``nact`` moving
-    bodies (step/active.py: in slot order; kept up to date here) or ALL and n; ``rows`` the step's
-    ``nrows`` rows (act's first) or ALL and n (store/slot_list.py).
+    labels and of islands woken or put to sleep (LABEL, WOKEN); ``ring`` the islands' member
+    cycles (step/active.py; kept here as islands fall asleep), or empty (none: waking scans).
+    ``act``: the ``nact`` moving bodies (step/active.py: in slot order; kept up to date here) or
+    ALL and n; ``rows`` the step's ``nrows`` rows (act's first) or ALL and n
+    (store/slot_list.py).
     """
     c = ctx[0]
     n = c.n
@@ -161,8 +175,8 @@ def update_islands(ctx, B, C, S, JL, parent, min_t, label, act, nact, rows, nrow
     time_to_sleep = c.time_to_sleep
     listed = act.shape[0] > 0
     woken = label[WOKEN]
-    _wake_touched(B, n, C, nc, S, ns, slop, label)
-    _wake_pushed(B, n, rows, nact if listed else 0, nrows, lin_tol, ang_tol, label)
+    _wake_touched(B, n, C, nc, S, ns, slop, label, ring)
+    _wake_pushed(B, n, rows, nact if listed else 0, nrows, lin_tol, ang_tol, label, ring)
     if listed and label[WOKEN] != woken:
         nact = moving_slots(B, n, act)
     for k in range(nact):
@@ -194,12 +208,12 @@ def update_islands(ctx, B, C, S, JL, parent, min_t, label, act, nact, rows, nrow
         if b >= 0 and _both_awake(B, a, b):
             union_roots(parent, a, b)
     if JL.shape[0]:
-        _joint_links(B, n, JL, parent, label)
-    return _sleep(B, act, nact, parent, min_t, label, time_to_sleep)
+        _joint_links(B, n, JL, parent, label, ring)
+    return _sleep(B, act, nact, parent, min_t, label, ring, time_to_sleep)
 
 
 @kernel
-def _sleep(B, act, nact, parent, min_t, label, time_to_sleep):
+def _sleep(B, act, nact, parent, min_t, label, ring, time_to_sleep):
     """Put to sleep every island whose bodies all rested ``time_to_sleep``; the awake count and
     the moving bodies left in ``act`` (listed: the sleepers dropped from it)."""
     for k in range(nact):
@@ -222,8 +236,13 @@ def _sleep(B, act, nact, parent, min_t, label, time_to_sleep):
                     label[LABEL] += 1
                     B.island[i] = label[LABEL]
                     label[WOKEN] += 1
+                    if ring.shape[0]:
+                        ring[i] = i  # the island's cycle, grown as its members follow
                 else:
                     B.island[i] = B.island[r]
+                    if ring.shape[0]:
+                        ring[i] = ring[r]
+                        ring[r] = i
                 B.awake[i] = 0
                 B.v[i, 0] = 0.0
                 B.v[i, 1] = 0.0
@@ -257,7 +276,7 @@ def update_islands_flat(ctx, BF, BI, CF, CI, Cpt, SF, SI, JL, parent, min_t, lab
     every = np.zeros(0, np.int64)  # store/slot_list.ALL
     n = ctx[0].n
     return update_islands(ctx, bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI), JL, parent,
-                          min_t, label, every, n, every, n)[0]
+                          min_t, label, every, every, n, every, n)[0]
 
 
 class Islands:

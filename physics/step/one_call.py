@@ -192,12 +192,18 @@ class OneCall:
         self.P = P = new_pack(*values)
         self._call = direct(soft_world_step, P)
 
-    @staticmethod
-    def _sweep(nf: int, npairs: int) -> tuple:
-        """The sweep's scratch for ``nf`` fixtures and ``npairs`` pairs (sweep_pairs' sizes), its
-        kept order fresh.  Under brute force it is empty (0, 0), of the same types: the pack's
-        type, and so the compiled driver, is the same for both broad phases."""
+    def _sweep(self, nf: int, npairs: int) -> tuple:
+        """The sweep's scratch for ``nf`` fixtures and ``npairs`` pairs (sweep_pairs' sizes): the
+        last pack's while the fixture count is the same (its kept order is a permutation of the
+        slots, which the next sweep repairs; sorting it afresh after every grow of a buffer cost a
+        waking wall a full sort a step), else with a fresh order.  Under brute force it is empty
+        (0, 0), of the same types: the pack's type, and so the compiled driver, is the same for
+        both broad phases."""
         i4 = np.int32
+        old = self.sweep
+        if old is not None and nf > 0 and len(old[1]) == nf:
+            tmp = old[7] if len(old[7]) == npairs else np.empty((npairs, 2), i4)
+            return (*old[:7], tmp, old[8])
         return (np.full(2, -1, np.int64), np.arange(nf, dtype=i4), np.empty(nf), np.empty(nf, i4),
                 np.empty(nf, i4), np.empty(nf + 2, i4), np.empty(6 * nf, i4), np.empty((npairs, 2), i4),
                 np.empty(nf + 1, i4))
@@ -205,7 +211,7 @@ class OneCall:
     def _lists(self, s, ck) -> tuple:
         """The pack's ``active`` field: the step's lists (active.py) and the checkpoint's rows."""
         self.active.ensure(s.bodies.n, s.fixtures.n)
-        return (*self.active.fields(), ck.rows, ck.mark, *self.active.index)
+        return (*self.active.fields(), ck.rows, ck.mark, *self.active.index, *self.active.rings)
 
     def _v0(self, rows: int) -> np.ndarray:
         """soft_step's start-velocity and pivot scratch, ``rows`` long."""
@@ -304,7 +310,7 @@ class OneCall:
             except SimulationError as err:
                 pl.refuse(world, err, "collide")
         elif code == drv.GROW_PAIRS:
-            pl._pairs = np.empty((need + need // 2 + 16, 2), np.int32)
+            pl._pairs = np.empty((2 * need + 64, 2), np.int32)
         elif code == drv.GROW_ROWS:
             s.contacts.reserve(max(need, int(self.S[S_NTOUCH])), world.max_pairs)
         elif code == drv.NEED_FULL:
@@ -313,7 +319,9 @@ class OneCall:
             joint_work(s)._key = None  # the system is rebuilt for the bodies' new kinds
         elif code == drv.GROW_BLOCKS:
             world._mode.coloured.grow(need)
+        geometry = self.S[S_GEOM]  # room grew, nothing was edited: the step's lists and boxes stand
         self.build(world, pl, now=True)
+        self.S[S_GEOM] = geometry
         self._par = pl.params(world)
         self.key = self._key(world, pl)
 

@@ -33,7 +33,7 @@ from .clock import cycles
 from .energy_bound import ACTIVE, guard_begin, guard_excess
 from .energy_sums import motor_power_of
 from .frame import begin_step, end_step
-from .active import REST_SLOTS, partition, step_rows
+from .active import REST_SLOTS, link_islands, partition, step_rows
 from .checkpoint import save_state
 from .islands import WOKEN, joint_links, update_islands
 from .pack import call_with_fields
@@ -172,8 +172,10 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     J = optional_joints(JF, JI)
     act, actf, sleepers, rows, mark = active[0], active[1], active[2], active[3], active[4]
     rest = D[D_REST:D_REST + REST_SLOTS]
-    if S[S_GEOM] != 0:  # an edit: the moving bodies listed anew
-        S[S_NACT], S[S_NACTF] = partition(B, F, c.n, nf, c.gx, c.gy, act, actf, sleepers, rest)
+    ring = active[10]
+    if S[S_GEOM] != 0:  # an edit: the moving bodies listed anew, the islands linked anew
+        S[S_NACT], S[S_NACTF], nsleep = partition(B, F, c.n, nf, c.gx, c.gy, act, actf, sleepers, rest)
+        link_islands(B, sleepers, nsleep, ring, active[11], active[12], active[13])
         S[S_PARTS] += 1
     nact = S[S_NACT]
     begin_step(ctx, B, F, Vt, nf, X, Q, V, W, Sp, start, S[S_GEOM] != 0, nthr, act, nact, actf, S[S_NACTF], rest)
@@ -229,9 +231,9 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     if S[S_SLEEP]:
         changes = label[WOKEN]
         S[S_NAWAKE], S[S_NACT] = update_islands(ctx, B, C, Sp, links[:_links(J, nj, links)], parent, min_t, label,
-                                                act, nact, rows, nrows)
+                                                ring, act, nact, rows, nrows)
         if label[WOKEN] != changes:  # islands woke or fell asleep: the lists anew
-            S[S_NACT], S[S_NACTF] = partition(B, F, c.n, nf, c.gx, c.gy, act, actf, sleepers, rest)
+            S[S_NACT], S[S_NACTF], _ = partition(B, F, c.n, nf, c.gx, c.gy, act, actf, sleepers, rest)
             S[S_PARTS] += 1
     T[5] = cycles()
     if S[S_EPAR] == 0:

@@ -85,10 +85,12 @@ class ContactBuffer:
         return len(self.cur.a)
 
     def ensure(self, need: int, limit: int | None = None) -> None:
-        """Room for ``need`` rows: the capacity doubles, but never beyond ``limit`` rows
+        """Room for ``need`` rows: twice the capacity or twice ``need``, whichever is more (a pile
+        woken row by row asks for half as many again each step), but never beyond ``limit`` rows
         (collision/narrowphase/limit.py) unless ``need`` itself is larger."""
         if need > self.capacity:
-            cap = max(need, 2 * self.capacity if limit is None else min(2 * self.capacity, limit))
+            grown = 2 * max(need, self.capacity)
+            cap = max(need, grown if limit is None else min(grown, limit))
             old = self.prev_cols
             self._tables(cap)
             for a, b in zip(self.prev_cols.flat, old.flat):
