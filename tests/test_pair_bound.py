@@ -78,12 +78,14 @@ def test_the_narrow_phase_refuses_more_contact_rows_than_its_bound():
     assert s.contacts.n == rows
 
 
-def test_contact_tables_grow_by_doubling_but_never_past_the_bound():
+def test_contact_tables_grow_to_twice_the_need_but_never_past_the_bound():
     from physics.store.contacts import ContactBuffer
     c = ContactBuffer(256)
     c.ensure(300, 400)
-    assert c.capacity == 400  # doubling would have made 512
+    assert c.capacity == 400  # twice the need would have made 600
     c.ensure(300)
     assert c.capacity == 400
     c.ensure(500)
-    assert c.capacity == 800  # without a bound: doubling
+    assert c.capacity == 1000  # without a bound: twice the need (a waking pile asks for more each step)
+    c.ensure(1100)
+    assert c.capacity == 2200

@@ -64,3 +64,17 @@ def argsort_into(key, n, order, tmp):
     if in_tmp:
         for i in range(n):
             order[i] = tmp[i]
+
+
+@kernel(forceinline=True)
+def first_at_least(key, m, x):
+    """The first position in the ascending ``key[:m]`` whose key is not below x (m if none)."""
+    lo = 0
+    hi = m
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if key[mid] < x:
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo

@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..._jit import kernel
+from ..argsort import first_at_least
 from ...store.flat import fixtures_view
 from ..reach import may_touch
 
@@ -33,14 +34,7 @@ def _joined(keys, a, b):
     if m == 0:
         return False
     key = np.int64(min(a, b)) * 4294967296 + np.int64(max(a, b))
-    lo = 0
-    hi = m
-    while lo < hi:
-        mid = (lo + hi) // 2
-        if keys[mid] < key:
-            lo = mid + 1
-        else:
-            hi = mid
+    lo = first_at_least(keys, m, key)
     return lo < m and keys[lo] == key
 
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..._jit import kernel
-from ..argsort import argsort_into
+from ..argsort import argsort_into, first_at_least
 from .filter import can_pair, overlap, push
 from .sweep import FEW_AWAKE, _finite, _resting
 
@@ -60,20 +60,6 @@ def build_index(F, nf, skey, order, tmp, rkey, rslot):
 
 
 @kernel
-def _first_at_least(key, m, x):
-    """The first position in the sorted ``key[:m]`` whose key is not below x."""
-    lo = 0
-    hi = m
-    while lo < hi:
-        mid = (lo + hi) // 2
-        if key[mid] < x:
-            lo = mid + 1
-        else:
-            hi = mid
-    return lo
-
-
-@kernel
 def indexed_pairs(F, actf, nactf, rkey, rslot, nrest, wide, tmp):
     """The pairs of the awake fixtures among the ``nactf`` in ``actf`` (slot order): with the
     resting ones the index finds, and with each other once; into ``tmp`` (as many as fit,
@@ -89,7 +75,7 @@ def indexed_pairs(F, actf, nactf, rkey, rslot, nrest, wide, tmp):
             continue
         hi = aabb[i, 2]
         lo = aabb[i, 0] - reach
-        for c in range(_first_at_least(rkey, nrest, lo - SLACK * abs(lo)), nrest):
+        for c in range(first_at_least(rkey, nrest, lo - SLACK * abs(lo)), nrest):
             if rkey[c] > hi:
                 break
             j = rslot[c]
