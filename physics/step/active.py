@@ -81,11 +81,11 @@ def _add(i, rows, mark, stamp, k):
 
 
 @kernel
-def step_rows(Ca, Cb, nc, J, nj, S, ns, act, nact, rows, mark, stamp):
+def step_rows(Ca, Cb, nc, J, nj, S, ns, act, nact, rows, mark, stamp, key, order, tmp):
     """``rows`` (module doc): the ``nact`` slots of ``act``, then in slot order the other bodies of
     the ``nc`` manifolds (``Ca``, ``Cb``), the ``nj`` joints (``J``, None without) and the ``ns``
-    springs (``S``); ``mark`` per-body scratch, ``stamp`` a value it holds for no body yet.
-    Returns the count."""
+    springs (``S``); ``mark`` per-body scratch, ``stamp`` a value it holds for no body yet;
+    ``key``, ``order``, ``tmp`` the sort's scratch (n long).  Returns the count."""
     for k in range(nact):
         rows[k] = act[k]
         mark[act[k]] = stamp
@@ -100,32 +100,16 @@ def step_rows(Ca, Cb, nc, J, nj, S, ns, act, nact, rows, mark, stamp):
     for j in range(ns):
         k = _add(S.a[j], rows, mark, stamp, k)
         k = _add(S.b[j], rows, mark, stamp, k)
-    _heapsort(rows, nact, k)  # slot order, as a loop over every body would meet them
+    # the others in slot order, as a loop over every body would meet them
+    m = k - nact
+    for j in range(m):
+        key[j] = rows[nact + j]
+    argsort_into(key, m, order, tmp)
+    for j in range(m):
+        tmp[j] = rows[nact + order[j]]
+    for j in range(m):
+        rows[nact + j] = tmp[j]
     return k
-
-
-@kernel
-def _heapsort(a, lo, hi):
-    """Sort ``a[lo:hi]`` ascending in place (heapsort: no scratch, n log n)."""
-    n = hi - lo
-    for start in range(n // 2 - 1, -1, -1):
-        _sift(a, lo, start, n)
-    for end in range(n - 1, 0, -1):
-        a[lo], a[lo + end] = a[lo + end], a[lo]
-        _sift(a, lo, 0, end)
-
-
-@kernel(forceinline=True)
-def _sift(a, lo, root, n):
-    """Restore the max-heap ``a[lo:lo + n]`` below ``root``."""
-    while 2 * root + 1 < n:
-        child = 2 * root + 1
-        if child + 1 < n and a[lo + child] < a[lo + child + 1]:
-            child += 1
-        if a[lo + root] >= a[lo + child]:
-            return
-        a[lo + root], a[lo + child] = a[lo + child], a[lo + root]
-        root = child
 
 
 class Active:
@@ -145,8 +129,11 @@ class Active:
             # the resting boxes' index (broadphase/resting_index.py): its scratch, keys and fixtures
             self.index = (np.zeros(capf), np.zeros(capf, np.int64), np.zeros(capf, np.int64), np.zeros(capf),
                           np.zeros(capf, np.int64))
-            # the islands' member cycles (link_islands) and their sort's scratch
-            self.rings = (np.zeros(cap, np.int64), np.zeros(cap), np.zeros(cap, np.int64), np.zeros(cap, np.int64))
+            self.ring = np.zeros(cap, np.int64)  # the islands' member cycles (link_islands)
+            # a sort's scratch over bodies (link_islands, step_rows): keys, order, merge space
+            self.sort = (np.zeros(cap), np.zeros(cap, np.int64), np.zeros(cap, np.int64))
 
-    def fields(self) -> tuple:
-        return self.act, self.actf, self.sleepers
+    def fields(self, rows: np.ndarray, mark: np.ndarray) -> tuple:
+        """The pack's ``active`` field, with the checkpoint's ``rows`` and their ``mark``s:
+        (act, actf, sleepers, rows, mark, index, ring, *sort), as the driver unpacks it."""
+        return (self.act, self.actf, self.sleepers, rows, mark, self.index, self.ring, *self.sort)

@@ -153,16 +153,15 @@ def _both_awake(B, a, b):
 
 @kernel
 def update_islands(ctx, B, C, S, JL, parent, min_t, label, ring, act, nact, rows, nrows):
-    """One sleep update after the solver; returns the number of awake non-static bodies and of
-    the moving bodies listed in ``act`` after it.
+    """One sleep update after the solver; returns the number of awake non-static bodies.
 
     ``JL`` the joint links (see the module doc; no rows without joints); ``parent`` and
     ``min_t`` are scratch arrays of at least n entries; ``label`` the counters of fresh island
     labels and of islands woken or put to sleep (LABEL, WOKEN); ``ring`` the islands' member
     cycles (step/active.py; kept here as islands fall asleep), or empty (none: waking scans).
-    ``act``: the ``nact`` moving bodies (step/active.py: in slot order; kept up to date here) or
-    ALL and n; ``rows`` the step's ``nrows`` rows (act's first) or ALL and n
-    (store/slot_list.py).
+    ``act``: the ``nact`` moving bodies (step/active.py: in slot order; listed again here when an
+    island wakes, and by the caller after any island woke or fell asleep: ``label[WOKEN]``) or ALL
+    and n; ``rows`` the step's ``nrows`` rows (act's first) or ALL and n (store/slot_list.py).
     """
     c = ctx[0]
     n = c.n
@@ -214,8 +213,7 @@ def update_islands(ctx, B, C, S, JL, parent, min_t, label, ring, act, nact, rows
 
 @kernel
 def _sleep(B, act, nact, parent, min_t, label, ring, time_to_sleep):
-    """Put to sleep every island whose bodies all rested ``time_to_sleep``; the awake count and
-    the moving bodies left in ``act`` (listed: the sleepers dropped from it)."""
+    """Put to sleep every island whose bodies all rested ``time_to_sleep``; the awake count."""
     for k in range(nact):
         min_t[at(act, k)] = np.inf
     for k in range(nact):
@@ -225,7 +223,6 @@ def _sleep(B, act, nact, parent, min_t, label, ring, time_to_sleep):
             if B.sleep_t[i] < min_t[r]:
                 min_t[r] = B.sleep_t[i]
     awake = 0
-    kept = 0
     for k in range(nact):
         i = at(act, k)
         if B.kind[i] == DYNAMIC and B.awake[i] == 1:
@@ -247,14 +244,11 @@ def _sleep(B, act, nact, parent, min_t, label, ring, time_to_sleep):
                 B.v[i, 0] = 0.0
                 B.v[i, 1] = 0.0
                 B.w[i] = 0.0
-                continue
-            awake += 1
+            else:
+                awake += 1
         elif B.kind[i] == KINEMATIC and _moving(B, i):
             awake += 1
-        if act.shape[0]:
-            act[kept] = i
-        kept += 1
-    return awake, kept
+    return awake
 
 
 @kernel
@@ -276,7 +270,7 @@ def update_islands_flat(ctx, BF, BI, CF, CI, Cpt, SF, SI, JL, parent, min_t, lab
     every = np.zeros(0, np.int64)  # store/slot_list.ALL
     n = ctx[0].n
     return update_islands(ctx, bodies_view(BF, BI), contacts_view(CF, CI, Cpt), springs_view(SF, SI), JL, parent,
-                          min_t, label, every, every, n, every, n)[0]
+                          min_t, label, every, every, n, every, n)
 
 
 class Islands:

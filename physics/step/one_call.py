@@ -211,7 +211,7 @@ class OneCall:
     def _lists(self, s, ck) -> tuple:
         """The pack's ``active`` field: the step's lists (active.py) and the checkpoint's rows."""
         self.active.ensure(s.bodies.n, s.fixtures.n)
-        return (*self.active.fields(), ck.rows, ck.mark, *self.active.index, *self.active.rings)
+        return self.active.fields(ck.rows, ck.mark)
 
     def _v0(self, rows: int) -> np.ndarray:
         """soft_step's start-velocity and pivot scratch, ``rows`` long."""

@@ -55,8 +55,9 @@ FIELDS = (
     # 1 in a world large enough to split its loops between threads, None in the serial build
     # (physics/threads.py: the driver for None contains no parallel loop)
     "split",
-    # the step's lists (active.py): moving bodies, their fixtures, the sleepers' scratch, and the
-    # checkpoint's rows and their marks (checkpoint.py)
+    # the step's lists and their scratch (active.Active.fields): moving bodies, their fixtures,
+    # the sleepers, the checkpoint's rows and their marks (checkpoint.py), the resting boxes'
+    # index, the islands' member cycles and a sort's scratch
     "active",
 )
 

@@ -68,7 +68,7 @@ def _motors(J, B, nj):
 
 
 @kernel
-def _broad_phase(F, nf, pairs, swept, sweep, nthr, active, S, D):
+def _broad_phase(F, nf, pairs, swept, sweep, nthr, actf, index, S, D):
     """The count of the fixtures' overlapping pairs: brute force, sorted into ``pairs``, or
     (``swept``) the sweep with the world's scratch, unsorted into its ``tmp``, which is as long
     as ``pairs``, so a count that fits one fits both; with few boxes awake, their queries of
@@ -78,7 +78,7 @@ def _broad_phase(F, nf, pairs, swept, sweep, nthr, active, S, D):
     if not swept:
         return brute_pairs(F, nf, pairs)
     state, order, key, b0, b1, bstart, ent, tmp, head = sweep
-    actf, skey, iorder, itmp, rkey, rslot = active[1], active[5], active[6], active[7], active[8], active[9]
+    skey, iorder, itmp, rkey, rslot = index
     if few_awake_of(F, actf, S[S_NACTF]):
         if S[S_INDEXED] != S[S_PARTS]:
             S[S_NREST], D[D_WIDE] = build_index(F, nf, skey, iorder, itmp, rkey, rslot)
@@ -170,12 +170,11 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     Vt = make_table("verts", (VF,))
     Sp = make_table("springs", (SF, SI))
     J = optional_joints(JF, JI)
-    act, actf, sleepers, rows, mark = active[0], active[1], active[2], active[3], active[4]
+    act, actf, sleepers, rows, mark, index, ring, skey, sorder, stmp = active
     rest = D[D_REST:D_REST + REST_SLOTS]
-    ring = active[10]
     if S[S_GEOM] != 0:  # an edit: the moving bodies listed anew, the islands linked anew
         S[S_NACT], S[S_NACTF], nsleep = partition(B, F, c.n, nf, c.gx, c.gy, act, actf, sleepers, rest)
-        link_islands(B, sleepers, nsleep, ring, active[11], active[12], active[13])
+        link_islands(B, sleepers, nsleep, ring, skey, sorder, stmp)
         S[S_PARTS] += 1
     nact = S[S_NACT]
     begin_step(ctx, B, F, Vt, nf, X, Q, V, W, Sp, start, S[S_GEOM] != 0, nthr, act, nact, actf, S[S_NACTF], rest)
@@ -185,7 +184,7 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     if not _joints_ready(J, B, nj, kinds):
         return JOINT_KINDS
     T[1] = cycles()
-    npairs = _broad_phase(F, nf, pairs, S[S_SWEEP] != 0, sweep, nthr, active, S, D)
+    npairs = _broad_phase(F, nf, pairs, S[S_SWEEP] != 0, sweep, nthr, actf, index, S, D)
     S[S_NEED] = npairs
     if npairs > S[S_LIMIT]:
         return TOO_MANY_PAIRS
@@ -218,7 +217,8 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     S[S_NC] = nc
     c.nc = nc
     S[S_STAMP] += 1
-    nrows = S[S_NROWS] = step_rows(C.a, C.b, nc, J, nj, Sp, c.ns, act, nact, rows, mark, S[S_STAMP])
+    nrows = S[S_NROWS] = step_rows(C.a, C.b, nc, J, nj, Sp, c.ns, act, nact, rows, mark, S[S_STAMP], skey, sorder,
+                                   stmp)
     save_state(B, rows[nact:], nrows - nact, X, Q, V, W)  # the rows beyond act (begin_step saved those)
     T[3] = cycles()
     _scale_impulses(C, nc, D[D_CADOPT])
@@ -230,8 +230,8 @@ def _drive(ctx, par, S, D, T, G, BF, BI, FF, FI, ghost, wghost, VF, VI, SF, SI, 
     T[4] = cycles()
     if S[S_SLEEP]:
         changes = label[WOKEN]
-        S[S_NAWAKE], S[S_NACT] = update_islands(ctx, B, C, Sp, links[:_links(J, nj, links)], parent, min_t, label,
-                                                ring, act, nact, rows, nrows)
+        S[S_NAWAKE] = update_islands(ctx, B, C, Sp, links[:_links(J, nj, links)], parent, min_t, label, ring, act,
+                                     nact, rows, nrows)
         if label[WOKEN] != changes:  # islands woke or fell asleep: the lists anew
             S[S_NACT], S[S_NACTF], _ = partition(B, F, c.n, nf, c.gx, c.gy, act, actf, sleepers, rest)
             S[S_PARTS] += 1
