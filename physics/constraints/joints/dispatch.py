@@ -28,7 +28,7 @@ from .mouse import prepare_mouse, rows_mouse, solve_mouse
 from .prismatic import prepare_prismatic, rows_prismatic
 from .revolute import prepare_revolute, rows_revolute
 from .rotary import ROTARY, prepare_rotary, rows_rotary
-from .rows import solve_equality, solve_free_rows, warm_start_rows
+from .rows import block_factors, solve_equality, solve_free_rows, warm_start_rows
 from .system.block import BLOCK, SEQUENTIAL, correct_block, solve_block
 from .system.solve import FACTORED, STALE, correct_system, solve_system
 from .weld import prepare_weld, rows_weld
@@ -81,17 +81,28 @@ def joint_rows(B, J, JW, j, a, b):
         rows_rotary(B, J, JW, j, a, b)
 
 
+@row_inline
+def equality_rows_of(mask):
+    return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1)
+
+
 @row_kernel
 def refresh_rows(c, B, J, JW, JS):
     """Every joint's rows at the bodies' current positions.  A row's geometry depends on the
     positions only (the arms, the separation, the angle, the effective mass), so the rows built
     here serve every velocity pass until the bodies move again: this is the one place the kinds'
     row builders are compiled into, and each is run once per move, not once per pass.  The global
-    system's factors are of the old rows: stale (system/solve.py)."""
+    system's factors are of the old rows: stale (system/solve.py); each joint's own equality block
+    is factored here (rows.block_factors)."""
     JS.dims[FACTORED] = STALE
     for j in range(c.nj):
         if JW.on[j]:
-            joint_rows(B, J, JW, j, JW.ab[j, 0], JW.ab[j, 1])
+            a = JW.ab[j, 0]
+            b = JW.ab[j, 1]
+            joint_rows(B, J, JW, j, a, b)
+            m = equality_rows_of(JW.mask[j])
+            if m > 0:
+                block_factors(JW, j, a, b, m)
 
 
 @row_kernel
@@ -104,11 +115,6 @@ def warm_start_joints(c, B, J, JW, JS, refresh):
     for j in range(c.nj):
         if JW.on[j]:
             warm_start_rows(J, JW, j, JW.ab[j, 0], JW.ab[j, 1])
-
-
-@row_inline
-def equality_rows_of(mask):
-    return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1)
 
 
 @row_kernel

@@ -13,7 +13,7 @@ from ...store.joints import EQ0, EQ1, EQ2, LOWER, MOTOR_ROW, SPRING, UPPER
 from ..body_rows import II, IM
 from .frame import arms, relative_angle
 from .layout import MAX_MOTOR
-from .rows import clear_row, set_row
+from .rows import clear_row, idle, set_row
 from .soft_rows import rigid_row, spring_softness
 
 
@@ -65,9 +65,14 @@ def point_rows(JW, j, a, b, ims, iia, iib):
 
 @row_part
 def rows_revolute(B, J, JW, j, a, b):
+    """The point rows; the angular rows only where the joint has a spring, motor or limit (a
+    plain hinge's refresh then writes two rows, not seven)."""
     ims = JW.SB[a, IM] + JW.SB[b, IM]
     iia = JW.SB[a, II]
     iib = JW.SB[b, II]
     point_rows(JW, j, a, b, ims, iia, iib)
-    clear_row(JW, j, EQ2)
-    angular_rows(B, J, JW, j, ims, iia, iib)
+    if not idle(J, JW, j, EQ2):
+        clear_row(JW, j, EQ2)
+    if not (idle(J, JW, j, SPRING) and idle(J, JW, j, MOTOR_ROW) and idle(J, JW, j, LOWER)
+            and idle(J, JW, j, UPPER)):
+        angular_rows(B, J, JW, j, ims, iia, iib)

@@ -43,6 +43,13 @@ def clear_row(JW, j, r):
 
 
 @row_inline
+def idle(J, JW, j, r):
+    """Row r of joint j takes no part and holds no impulse: nothing reads its geometry (the
+    solves go by the row mask, the warm start and the reaction by the impulse)."""
+    return ((JW.mask[j] >> r) & 1) == 0 and J.impulse[j, r] == 0.0
+
+
+@row_inline
 def row_speed(JW, a, b, j, r):
     """C' of row r now."""
     return (JW.G[j, r, NX] * (JW.SB[a, VX] - JW.SB[b, VX]) + JW.G[j, r, NY] * (JW.SB[a, VY] - JW.SB[b, VY])
@@ -63,12 +70,48 @@ def apply_row(JW, a, b, j, r, lam):
 
 
 @row_inline
+def load_pair(SB, a, b):
+    """(v_a, w_a, v_b, w_b) as six locals: a joint's solve works on them and stores them once
+    (``store_pair``), so its stores to SB do not make every row's geometry be loaded again."""
+    return SB[a, VX], SB[a, VY], SB[a, W], SB[b, VX], SB[b, VY], SB[b, W]
+
+
+@row_inline
+def store_pair(SB, a, b, v):
+    SB[a, VX] = v[0]
+    SB[a, VY] = v[1]
+    SB[a, W] = v[2]
+    SB[b, VX] = v[3]
+    SB[b, VY] = v[4]
+    SB[b, W] = v[5]
+
+
+@row_inline
+def pushed(G, j, r, lam, ms, v):
+    """``apply_row`` on the locals of ``load_pair`` (the same operations); ms = (m_a^-1, I_a^-1,
+    m_b^-1, I_b^-1)."""
+    px = lam * G[j, r, NX]
+    py = lam * G[j, r, NY]
+    return (v[0] + ms[0] * px, v[1] + ms[0] * py, v[2] + ms[1] * lam * G[j, r, KA],
+            v[3] - ms[2] * px, v[4] - ms[2] * py, v[5] - ms[3] * lam * G[j, r, KB])
+
+
+@row_inline
+def inverse_masses(SB, a, b):
+    return SB[a, IM], SB[a, II], SB[b, IM], SB[b, II]
+
+
+@row_inline
 def warm_start_rows(J, JW, j, a, b):
     """Apply every row's accumulated impulse (rows a joint does not use hold 0)."""
+    SB = JW.SB
+    v = load_pair(SB, a, b)
+    ms = inverse_masses(SB, a, b)
     for r in range(J.impulse.shape[1]):
         lam = J.impulse[j, r]
         if lam != 0.0:
-            apply_row(JW, a, b, j, r, lam)
+            v = pushed(JW.G, j, r, lam, ms, v)
+    store_pair(SB, a, b, v)
 
 
 @row_inline
@@ -160,36 +203,93 @@ def solve_sym(m, k00, k01, k02, k11, k12, k22, g0, g1, g2):
 
 
 @row_inline
+def block_factors(JW, j, a, b, m):
+    """The equality block's numbers for ``solve_equality``, from the rows as ``refresh_rows``
+    wrote them (K depends on the positions and masses only, so one factoring serves every pass
+    until the bodies move): ``K[j]`` holds K_00 (m = 1), or the cofactors of K (m = 2, 3: x =
+    C g / det, solve_sym's operations) and 1/det in slot 6, 0 for a degenerate block."""
+    K = JW.K
+    k00 = block_entry(JW, a, b, j, 0, 0)
+    K[j, 0] = k00
+    K[j, 6] = 0.0
+    if m == 1:
+        K[j, 6] = 1.0 if k00 > 0.0 else 0.0
+        return
+    k01 = block_entry(JW, a, b, j, 0, 1)
+    k11 = block_entry(JW, a, b, j, 1, 1)
+    if m == 2:
+        det = k00 * k11 - k01 * k01
+        if det > SINGULAR * k00 * k11 and det > 0.0:
+            K[j, 0] = k11
+            K[j, 1] = -k01
+            K[j, 3] = k00
+            K[j, 6] = 1.0 / det
+        return
+    k02 = block_entry(JW, a, b, j, 0, 2)
+    k12 = block_entry(JW, a, b, j, 1, 2)
+    k22 = block_entry(JW, a, b, j, 2, 2)
+    c00 = k11 * k22 - k12 * k12
+    c01 = k02 * k12 - k01 * k22
+    c02 = k01 * k12 - k02 * k11
+    det = k00 * c00 + k01 * c01 + k02 * c02
+    if det > SINGULAR * k00 * k11 * k22 and det > 0.0:
+        K[j, 0] = c00
+        K[j, 1] = c01
+        K[j, 2] = c02
+        K[j, 3] = k00 * k22 - k02 * k02
+        K[j, 4] = k01 * k02 - k00 * k12
+        K[j, 5] = k00 * k11 - k01 * k01
+        K[j, 6] = 1.0 / det
+
+
+@row_inline
+def block_solution(JW, j, m, g0, g1, g2):
+    """K^-1 g for the factors of ``block_factors``; a degenerate block (e.g. nothing can rotate)
+    row by row, each row on its own effective mass."""
+    K = JW.K
+    inv = K[j, 6]
+    if inv == 0.0:
+        G = JW.G
+        return g0 * G[j, 0, MASS], g1 * G[j, 1, MASS], g2 * G[j, 2, MASS]
+    if m == 1:
+        return g0 / K[j, 0], 0.0, 0.0
+    if m == 2:
+        return (K[j, 0] * g0 + K[j, 1] * g1) * inv, (K[j, 3] * g1 + K[j, 1] * g0) * inv, 0.0
+    return ((K[j, 0] * g0 + K[j, 1] * g1 + K[j, 2] * g2) * inv, (K[j, 1] * g0 + K[j, 3] * g1 + K[j, 4] * g2) * inv,
+            (K[j, 2] * g0 + K[j, 4] * g1 + K[j, 5] * g2) * inv)
+
+
+@row_inline
+def local_speed(G, j, r, dvx, dvy, wa, wb):
+    """``row_speed`` on velocities held in locals (the same operations)."""
+    return G[j, r, NX] * dvx + G[j, r, NY] * dvy + G[j, r, KA] * wa - G[j, r, KB] * wb
+
+
+@row_inline
 def solve_equality(J, JW, j, a, b, m, use_bias):
-    """The joint's m equality rows as one block, soft as the pass asks (see the module doc)."""
+    """The joint's m equality rows as one block, soft as the pass asks (see the module doc), on
+    the factors of the last refresh; the rows' impulses applied in turn, as ``apply_row`` does."""
     o = 0 if use_bias else 3
-    g0 = row_speed(JW, a, b, j, 0) + JW.F[j, SOFT_EQ + o] * JW.G[j, 0, CC]
+    SB = JW.SB
+    G = JW.G
+    F = JW.F
+    v = load_pair(SB, a, b)
+    dvx = v[0] - v[3]
+    dvy = v[1] - v[4]
+    g0 = local_speed(G, j, 0, dvx, dvy, v[2], v[5]) + F[j, SOFT_EQ + o] * G[j, 0, CC]
     g1 = 0.0
     g2 = 0.0
-    k01 = 0.0
-    k02 = 0.0
-    k11 = 0.0
-    k12 = 0.0
-    k22 = 0.0
-    k00 = block_entry(JW, a, b, j, 0, 0)
     if m > 1:
-        g1 = row_speed(JW, a, b, j, 1) + JW.F[j, SOFT_EQ + 6 + o] * JW.G[j, 1, CC]
-        k01 = block_entry(JW, a, b, j, 0, 1)
-        k11 = block_entry(JW, a, b, j, 1, 1)
+        g1 = local_speed(G, j, 1, dvx, dvy, v[2], v[5]) + F[j, SOFT_EQ + 6 + o] * G[j, 1, CC]
     if m > 2:
-        g2 = row_speed(JW, a, b, j, 2) + JW.F[j, SOFT_EQ + 12 + o] * JW.G[j, 2, CC]
-        k02 = block_entry(JW, a, b, j, 0, 2)
-        k12 = block_entry(JW, a, b, j, 1, 2)
-        k22 = block_entry(JW, a, b, j, 2, 2)
-    ok, x0, x1, x2 = solve_sym(m, k00, k01, k02, k11, k12, k22, g0, g1, g2)
-    if not ok:  # a degenerate block (e.g. nothing can rotate): each row on its own
-        x0 = g0 * JW.G[j, 0, MASS]
-        x1 = g1 * JW.G[j, 1, MASS]
-        x2 = g2 * JW.G[j, 2, MASS]
+        g2 = local_speed(G, j, 2, dvx, dvy, v[2], v[5]) + F[j, SOFT_EQ + 12 + o] * G[j, 2, CC]
+    x0, x1, x2 = block_solution(JW, j, m, g0, g1, g2)
+    ms = inverse_masses(SB, a, b)
     for r in range(m):
         x = x0 if r == 0 else (x1 if r == 1 else x2)
         s = SOFT_EQ + 6 * r + o
         acc = J.impulse[j, r]
-        lam = -JW.F[j, s + 1] * x - JW.F[j, s + 2] * acc
+        lam = -F[j, s + 1] * x - F[j, s + 2] * acc
         J.impulse[j, r] = acc + lam
-        apply_row(JW, a, b, j, r, lam)
+        v = pushed(G, j, r, lam, ms, v)
+    store_pair(SB, a, b, v)

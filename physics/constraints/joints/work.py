@@ -1,9 +1,9 @@
 """The solvers' joint scratch and its upkeep (Python; kernels receive the arrays).
 
 ``JointScratch`` holds per joint the body rows it joins (``ab``: the world is row
-n), the prepared constants ``F`` and row geometry ``G`` (layout.py), whether it is
-on this step, its row mask and whether its equality rows stay sequential
-(``seq``); per body the step-start positions ``X0``/``Q0`` and the body rows
+n), the prepared constants ``F``, the row geometry ``G`` (layout.py) and the
+equality block's factors ``K`` (rows.block_factors), whether it is on this step,
+its row mask and whether its equality rows stay sequential (``seq``); per body the step-start positions ``X0``/``Q0`` and the body rows
 ``SB`` of modes that have none of their own.  ``JointWork.update`` grows the
 arrays and rebuilds the global system (system/topology.py) and the list of
 body pairs that must not collide only when the joint table's version or the
@@ -24,6 +24,7 @@ from .system.topology import build, empty_system
 
 #: per joint (the table's rows), then per body (arrays of their own: one row per body)
 PER_JOINT = {"ab": ((2,), np.int64), "F": ((NF,), np.float64), "G": ((ROWS, NG), np.float64),
+             "K": ((7,), np.float64),
              "on": ((), np.int64), "mask": ((), np.int64), "seq": ((), np.int64)}
 PER_BODY = {"X0": ((2,), np.float64), "Q0": ((), np.float64), "SB": ((NB,), np.float64)}
 JointScratch = view_class("JointScratch", {**PER_JOINT, **{k: (*e, "own") for k, e in PER_BODY.items()}},
