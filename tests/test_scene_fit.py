@@ -144,6 +144,18 @@ def test_a_heavy_body_above_a_light_one_gets_eight():
         assert value == SUBSTEPS and "mass ratio" in why and "'heavy' (400 kg) is above body 'light' (1 kg)" in why
 
 
+def test_a_body_a_thousand_times_heavier_also_gets_the_stiffest_contacts():
+    """At 1000:1 the contacts take a quarter of the rate of eight sub-steps (120 Hz at dt 1/60:
+    fit.py's module doc); at 400:1 they keep the default; the user's own value wins."""
+    w = heavy_over_light(dy=1.5, ratio=1000.0)
+    hz, why = w.settings.chosen()["contact_hertz"]
+    assert hz == pytest.approx(0.25 * SUBSTEPS / w.dt) and "1000:1" in why
+    assert w.settings["contact_hertz"] == hz and w.settings.chosen()["substeps"][0] == SUBSTEPS
+    assert "contact_hertz" not in heavy_over_light(dy=1.5, ratio=400.0).settings.chosen()
+    w.settings["contact_hertz"] = 30.0
+    assert w.settings["contact_hertz"] == 30.0 and "contact_hertz" not in w.settings.chosen()
+
+
 @pytest.mark.parametrize("case", ["beside", "below", "weightless", "light_enough"])
 def test_a_heavy_body_beside_or_below_or_weightless_or_99_to_1_does_not(case):
     w = {"beside": lambda: heavy_over_light(dx=3.0),

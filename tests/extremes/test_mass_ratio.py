@@ -9,12 +9,13 @@ def test_heavy_on_light_soft_step_holds_the_load():
     """Regime: a 1000 kg box (1 x 1 m) resting on a 1 kg box on static ground, default soft_step.
 
     Outcome: finite, the heavy box stays above the light one, the pair comes to rest (< 0.05 m/s)
-    and the combined sink over the last second is below 25 cm, a quarter of the light box (soft
-    contacts are mass-normalised: the ground contact of a 1 kg body carries 9.8 kN; measured 9 to
-    14 cm while the soft_step defaults were being tuned)."""
+    and the combined sink over the last second is below 5 cm, issue 18's target (soft contacts are
+    mass-normalised: the ground contact of a 1 kg body carries 9.8 kN; the world chooses eight
+    sub-steps and its stiffest contacts for 1000:1, solvers/soft_step/fit.py: 3.4 cm measured,
+    8.6 cm with the default contacts)."""
     m = mass_ratio_stack("soft_step")
     assert m["finite"] and m["order_kept"]
-    assert m["sink"] < 0.25
+    assert m["sink"] < 0.05
     assert m["speed"] < 0.05
 
 

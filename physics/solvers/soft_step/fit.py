@@ -1,5 +1,6 @@
-"""The sub-steps a scene calls for in ``soft_step``: more for thin or small dynamic bodies, and
-for a heavy body resting on a much lighter one.
+"""The sub-steps and contact stiffness a scene calls for in ``soft_step``: more sub-steps for thin
+or small dynamic bodies and for a heavy body resting on a much lighter one, stiffer contacts for
+a very heavy one.
 
 Four sub-steps hold a pyramid of 1 m boxes, but not Box2D v3's Card House (cards 2 mm x 0.4 m)
 nor its Tiny Pyramid (5 cm boxes): their top card and top box move 1.9 m and 20 box sizes in
@@ -10,10 +11,16 @@ thinner than two slops or a box smaller than twenty rocks and slides where a lar
 Sub-steps scale the soft contacts' stiffness with the sub-step rate (Catto, "Solver2D", 2024), so
 such scenes get eight; so does a body above one a hundred times lighter, which the soft contact
 between them lets sink into it (``_heavy_on_light``).  Every other scene keeps four
-and pays nothing.  Measured side by side in docs/reliability.md.
+and pays nothing.  A soft contact's spring is mass-weighted (its stiffness is the rows' effective
+mass times omega^2), so what a light body under a heavy one sinks grows with the mass ratio, not
+with the sub-steps: a 1000 kg box on a 1 kg box sinks 8.6 cm at 8, 12, 16 or 24 sub-steps at the
+default 60 Hz, 3.5 cm at 120 Hz.  Above STIFF:1 the contacts take a quarter of the sub-step rate,
+the stiffest Box2D v3's soft step allows (its contact hertz cap); 400:1 (HighMassRatio2) keeps the
+default, where stiffer contacts knock the small boxes from under the falling one.  Measured side
+by side in docs/reliability.md.
 
 The rule reads the dynamic bodies' shapes, masses and where they stand, so it is deterministic and
-changes only when the scene is edited; a user's ``substeps`` always wins.
+changes only when the scene is edited; a user's ``substeps`` or ``contact_hertz`` always wins.
 """
 from __future__ import annotations
 
@@ -27,6 +34,7 @@ SMALL = 20.0  # a dynamic body whose largest shape is smaller than this many lin
 HEAVY = 100.0  # a dynamic body above one this many times lighter (resting or falling on it)
 PAIRS = 1_000_000  # heavy x light candidate pairs looked at, at most (a larger scene is not judged)
 SUBSTEPS = 8
+STIFF = 1000.0  # above one this many times lighter, the contacts are also made as stiff as allowed
 
 
 def _extents(world):
@@ -56,30 +64,43 @@ def _extents(world):
 
 
 def fit(world) -> dict:
-    """``{"substeps": (8, why)}`` when the scene has a thin or a small dynamic body (module doc)."""
+    """``{"substeps": (8, why)}`` when the scene has a thin, a small or a heavy-on-light dynamic
+    body, and ``"contact_hertz"`` as well above STIFF:1 (module doc)."""
     n = world._store.bodies.n
     if n == 0:
         return {}
+    out = {}
+    why = _small_or_thin(world, n)
+    if why:
+        out["substeps"] = (SUBSTEPS, why)
+    pair = _heavy_on_light(world)
+    if pair is not None:
+        h, l, mh, ml = pair
+        ratio = f"{_name(world, h)} ({mh:.3g} kg) is above {_name(world, l)} ({ml:.3g} kg), {mh / ml:.0f}:1"
+        out.setdefault("substeps", (SUBSTEPS, f"mass ratio: {ratio} (at least {HEAVY:g}:1)"))
+        if mh >= STIFF * ml:
+            hertz = 0.25 * SUBSTEPS / world.dt
+            out["contact_hertz"] = (hertz, f"mass ratio: {ratio} (at least {STIFF:g}:1): contacts at a quarter "
+                                           f"of the rate of {SUBSTEPS} sub-steps, the stiffest soft contacts")
+    return out
+
+
+def _small_or_thin(world, n):
+    """Why the scene needs more sub-steps for its shapes ('' if it does not): its thinnest shape
+    under THIN linear slops, else its smallest body under SMALL."""
     slop = world.linear_slop
     body, short, long = _extents(world)
     thin = np.nonzero((short < THIN * slop) & (long >= 10 * THIN * slop))[0]
     if len(thin):
         t = thin[np.argmin(short[thin])]  # the thinnest, the first of equals
-        return {"substeps": (SUBSTEPS, f"thin shapes: {_name(world, body[t])} is {_mm(short[t])} thick "
-                                       f"(under {THIN:g} linear slops)")}
+        return f"thin shapes: {_name(world, body[t])} is {_mm(short[t])} thick (under {THIN:g} linear slops)"
     size = np.zeros(n)  # each body's largest shape
     np.maximum.at(size, body, long)
     small = np.nonzero((size > 0.0) & (size < SMALL * slop))[0]
     if len(small):
         b = small[np.argmin(size[small])]  # the smallest, the lowest slot of equals
-        return {"substeps": (SUBSTEPS, f"small bodies: {_name(world, b)} is {_mm(size[b])} across "
-                                       f"(under {SMALL:g} linear slops)")}
-    pair = _heavy_on_light(world)
-    if pair is not None:
-        h, l, mh, ml = pair
-        return {"substeps": (SUBSTEPS, f"mass ratio: {_name(world, h)} ({mh:.3g} kg) is above {_name(world, l)} "
-                                       f"({ml:.3g} kg), {mh / ml:.0f}:1 (at least {HEAVY:g}:1)")}
-    return {}
+        return f"small bodies: {_name(world, b)} is {_mm(size[b])} across (under {SMALL:g} linear slops)"
+    return ""
 
 
 def _heavy_on_light(world):
