@@ -50,23 +50,16 @@ def idle(J, JW, j, r):
 
 
 @row_inline
-def row_speed(JW, a, b, j, r):
-    """C' of row r now."""
-    return (JW.G[j, r, NX] * (JW.SB[a, VX] - JW.SB[b, VX]) + JW.G[j, r, NY] * (JW.SB[a, VY] - JW.SB[b, VY])
-            + JW.G[j, r, KA] * JW.SB[a, W] - JW.G[j, r, KB] * JW.SB[b, W])
+def local_speed(G, j, r, dvx, dvy, wa, wb):
+    """C' of row r for the velocities dv = v_a - v_b, w_a and w_b."""
+    return G[j, r, NX] * dvx + G[j, r, NY] * dvy + G[j, r, KA] * wa - G[j, r, KB] * wb
 
 
 @row_inline
-def apply_row(JW, a, b, j, r, lam):
-    """Impulse lam along row r: +on a, -on b."""
-    px = lam * JW.G[j, r, NX]
-    py = lam * JW.G[j, r, NY]
-    JW.SB[a, VX] += JW.SB[a, IM] * px
-    JW.SB[a, VY] += JW.SB[a, IM] * py
-    JW.SB[a, W] += JW.SB[a, II] * lam * JW.G[j, r, KA]
-    JW.SB[b, VX] -= JW.SB[b, IM] * px
-    JW.SB[b, VY] -= JW.SB[b, IM] * py
-    JW.SB[b, W] -= JW.SB[b, II] * lam * JW.G[j, r, KB]
+def row_speed(JW, a, b, j, r):
+    """C' of row r now."""
+    SB = JW.SB
+    return local_speed(JW.G, j, r, SB[a, VX] - SB[b, VX], SB[a, VY] - SB[b, VY], SB[a, W], SB[b, W])
 
 
 @row_inline
@@ -88,7 +81,7 @@ def store_pair(SB, a, b, v):
 
 @row_inline
 def pushed(G, j, r, lam, ms, v):
-    """``apply_row`` on the locals of ``load_pair`` (the same operations); ms = (m_a^-1, I_a^-1,
+    """The locals of ``load_pair`` after an impulse lam along row r; ms = (m_a^-1, I_a^-1,
     m_b^-1, I_b^-1)."""
     px = lam * G[j, r, NX]
     py = lam * G[j, r, NY]
@@ -99,6 +92,13 @@ def pushed(G, j, r, lam, ms, v):
 @row_inline
 def inverse_masses(SB, a, b):
     return SB[a, IM], SB[a, II], SB[b, IM], SB[b, II]
+
+
+@row_inline
+def apply_row(JW, a, b, j, r, lam):
+    """Impulse lam along row r: +on a, -on b."""
+    SB = JW.SB
+    store_pair(SB, a, b, pushed(JW.G, j, r, lam, inverse_masses(SB, a, b), load_pair(SB, a, b)))
 
 
 @row_inline
@@ -176,70 +176,75 @@ def block_entry(JW, a, b, j, r, s):
 
 
 @row_inline
-def solve_sym(m, k00, k01, k02, k11, k12, k22, g0, g1, g2):
-    """(solved, x) of K x = g for the leading m x m part of a symmetric K (m = 1, 2, 3)."""
+def sym_factors(m, k00, k01, k02, k11, k12, k22):
+    """(ok, c00, c01, c02, c11, c12, c22, inv) for the leading m x m part of a symmetric K (m = 1,
+    2, 3): the cofactors C and 1/det, so that x = C g / det solves K x = g (``sym_solution``);
+    m = 1 keeps c00 = K_00 (x = g0 / K_00).  Not ok for a degenerate block."""
+    no = (False, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     if m == 1:
         if k00 <= 0.0:
-            return False, 0.0, 0.0, 0.0
-        return True, g0 / k00, 0.0, 0.0
+            return no
+        return True, k00, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0
     if m == 2:
         det = k00 * k11 - k01 * k01
         if det <= SINGULAR * k00 * k11 or det <= 0.0:
-            return False, 0.0, 0.0, 0.0
-        inv = 1.0 / det
-        return True, (k11 * g0 - k01 * g1) * inv, (k00 * g1 - k01 * g0) * inv, 0.0
+            return no
+        return True, k11, -k01, 0.0, k00, 0.0, 0.0, 1.0 / det
     c00 = k11 * k22 - k12 * k12
     c01 = k02 * k12 - k01 * k22
     c02 = k01 * k12 - k02 * k11
     det = k00 * c00 + k01 * c01 + k02 * c02
     if det <= SINGULAR * k00 * k11 * k22 or det <= 0.0:
-        return False, 0.0, 0.0, 0.0
-    inv = 1.0 / det
-    c11 = k00 * k22 - k02 * k02
-    c12 = k01 * k02 - k00 * k12
-    c22 = k00 * k11 - k01 * k01
-    return (True, (c00 * g0 + c01 * g1 + c02 * g2) * inv, (c01 * g0 + c11 * g1 + c12 * g2) * inv,
+        return no
+    return (True, c00, c01, c02, k00 * k22 - k02 * k02, k01 * k02 - k00 * k12, k00 * k11 - k01 * k01,
+            1.0 / det)
+
+
+@row_inline
+def sym_solution(m, c00, c01, c02, c11, c12, c22, inv, g0, g1, g2):
+    """K^-1 g from the factors of ``sym_factors``."""
+    if m == 1:
+        return g0 / c00, 0.0, 0.0
+    if m == 2:
+        return (c00 * g0 + c01 * g1) * inv, (c11 * g1 + c01 * g0) * inv, 0.0
+    return ((c00 * g0 + c01 * g1 + c02 * g2) * inv, (c01 * g0 + c11 * g1 + c12 * g2) * inv,
             (c02 * g0 + c12 * g1 + c22 * g2) * inv)
 
 
 @row_inline
+def solve_sym(m, k00, k01, k02, k11, k12, k22, g0, g1, g2):
+    """(solved, x) of K x = g for the leading m x m part of a symmetric K (m = 1, 2, 3)."""
+    ok, c00, c01, c02, c11, c12, c22, inv = sym_factors(m, k00, k01, k02, k11, k12, k22)
+    if not ok:
+        return False, 0.0, 0.0, 0.0
+    x0, x1, x2 = sym_solution(m, c00, c01, c02, c11, c12, c22, inv, g0, g1, g2)
+    return True, x0, x1, x2
+
+
+@row_inline
 def block_factors(JW, j, a, b, m):
-    """The equality block's numbers for ``solve_equality``, from the rows as ``refresh_rows``
+    """The equality block's factors for ``solve_equality``, from the rows as ``refresh_rows``
     wrote them (K depends on the positions and masses only, so one factoring serves every pass
-    until the bodies move): ``K[j]`` holds K_00 (m = 1), or the cofactors of K (m = 2, 3: x =
-    C g / det, solve_sym's operations) and 1/det in slot 6, 0 for a degenerate block."""
-    K = JW.K
+    until the bodies move): ``K[j]`` holds ``sym_factors``' C and, in slot 6, 1/det, or 0 for a
+    degenerate block."""
     k00 = block_entry(JW, a, b, j, 0, 0)
-    K[j, 0] = k00
-    K[j, 6] = 0.0
-    if m == 1:
-        K[j, 6] = 1.0 if k00 > 0.0 else 0.0
-        return
-    k01 = block_entry(JW, a, b, j, 0, 1)
-    k11 = block_entry(JW, a, b, j, 1, 1)
-    if m == 2:
-        det = k00 * k11 - k01 * k01
-        if det > SINGULAR * k00 * k11 and det > 0.0:
-            K[j, 0] = k11
-            K[j, 1] = -k01
-            K[j, 3] = k00
-            K[j, 6] = 1.0 / det
-        return
-    k02 = block_entry(JW, a, b, j, 0, 2)
-    k12 = block_entry(JW, a, b, j, 1, 2)
-    k22 = block_entry(JW, a, b, j, 2, 2)
-    c00 = k11 * k22 - k12 * k12
-    c01 = k02 * k12 - k01 * k22
-    c02 = k01 * k12 - k02 * k11
-    det = k00 * c00 + k01 * c01 + k02 * c02
-    if det > SINGULAR * k00 * k11 * k22 and det > 0.0:
-        K[j, 0] = c00
-        K[j, 1] = c01
-        K[j, 2] = c02
-        K[j, 3] = k00 * k22 - k02 * k02
-        K[j, 4] = k01 * k02 - k00 * k12
-        K[j, 5] = k00 * k11 - k01 * k01
-        K[j, 6] = 1.0 / det
+    k01 = k02 = k11 = k12 = k22 = 0.0
+    if m > 1:
+        k01 = block_entry(JW, a, b, j, 0, 1)
+        k11 = block_entry(JW, a, b, j, 1, 1)
+    if m > 2:
+        k02 = block_entry(JW, a, b, j, 0, 2)
+        k12 = block_entry(JW, a, b, j, 1, 2)
+        k22 = block_entry(JW, a, b, j, 2, 2)
+    ok, c00, c01, c02, c11, c12, c22, inv = sym_factors(m, k00, k01, k02, k11, k12, k22)
+    K = JW.K
+    K[j, 0] = c00
+    K[j, 1] = c01
+    K[j, 2] = c02
+    K[j, 3] = c11
+    K[j, 4] = c12
+    K[j, 5] = c22
+    K[j, 6] = inv if ok else 0.0
 
 
 @row_inline
@@ -247,22 +252,10 @@ def block_solution(JW, j, m, g0, g1, g2):
     """K^-1 g for the factors of ``block_factors``; a degenerate block (e.g. nothing can rotate)
     row by row, each row on its own effective mass."""
     K = JW.K
-    inv = K[j, 6]
-    if inv == 0.0:
+    if K[j, 6] == 0.0:
         G = JW.G
         return g0 * G[j, 0, MASS], g1 * G[j, 1, MASS], g2 * G[j, 2, MASS]
-    if m == 1:
-        return g0 / K[j, 0], 0.0, 0.0
-    if m == 2:
-        return (K[j, 0] * g0 + K[j, 1] * g1) * inv, (K[j, 3] * g1 + K[j, 1] * g0) * inv, 0.0
-    return ((K[j, 0] * g0 + K[j, 1] * g1 + K[j, 2] * g2) * inv, (K[j, 1] * g0 + K[j, 3] * g1 + K[j, 4] * g2) * inv,
-            (K[j, 2] * g0 + K[j, 4] * g1 + K[j, 5] * g2) * inv)
-
-
-@row_inline
-def local_speed(G, j, r, dvx, dvy, wa, wb):
-    """``row_speed`` on velocities held in locals (the same operations)."""
-    return G[j, r, NX] * dvx + G[j, r, NY] * dvy + G[j, r, KA] * wa - G[j, r, KB] * wb
+    return sym_solution(m, K[j, 0], K[j, 1], K[j, 2], K[j, 3], K[j, 4], K[j, 5], K[j, 6], g0, g1, g2)
 
 
 @row_inline

@@ -3,8 +3,9 @@
 ``JointScratch`` holds per joint the body rows it joins (``ab``: the world is row
 n), the prepared constants ``F``, the row geometry ``G`` (layout.py) and the
 equality block's factors ``K`` (rows.block_factors), whether it is on this step,
-its row mask and whether its equality rows stay sequential (``seq``); per body the step-start positions ``X0``/``Q0`` and the body rows
-``SB`` of modes that have none of their own.  ``JointWork.update`` grows the
+its row mask and whether its equality rows stay sequential (``seq``); per body
+the step-start positions ``X0``/``Q0`` and the body rows ``SB`` of modes that
+have none of their own.  ``JointWork.update`` grows the
 arrays and rebuilds the global system (system/topology.py) and the list of
 body pairs that must not collide only when the joint table's version or the
 kinds of the joined bodies changed.
